@@ -1,0 +1,104 @@
+#include "app/render_command.h"
+
+#include "renderer/context/egl_context.h"
+#include "renderer/gpu/debug_output.h"
+#include "renderer/gpu/gl.h"
+#include "renderer/image/image_io.h"
+#include "renderer/render/renderer.h"
+#include "renderer/scene/scene.h"
+#include "renderer/settings/enum_names.h"
+#include "renderer/settings/settings_json.h"
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+namespace st::app {
+namespace fs = std::filesystem;
+namespace {
+
+// Scenes and their GPU copies are shared by presets that name the same file.
+struct SceneCache {
+    std::map<std::string, std::unique_ptr<Scene>> scenes;
+    std::map<std::string, std::unique_ptr<Renderer>> renderers;
+
+    Renderer& rendererFor(const std::string& spec, const fs::path& baseDir) {
+        std::string key = spec.rfind("builtin:", 0) == 0 ? spec : fs::weakly_canonical(baseDir / spec).string();
+        auto it = renderers.find(key);
+        if (it != renderers.end()) return *it->second;
+        scenes[key] = std::make_unique<Scene>(loadScene(spec, baseDir));
+        return *(renderers[key] = std::make_unique<Renderer>(*scenes[key]));
+    }
+};
+
+void checkDeviceLimits(const Settings& s, const fs::path& preset) {
+    GLint maxSize = 0, maxLayers = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    if (s.cascades.mapSize > maxSize)
+        throw std::runtime_error(preset.string() + ": cascades.mapSize: " +
+                                 std::to_string(s.cascades.mapSize) +
+                                 " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
+    if (s.output.width > maxSize || s.output.height > maxSize)
+        throw std::runtime_error(preset.string() + ": output size exceeds GL_MAX_TEXTURE_SIZE " +
+                                 std::to_string(maxSize));
+}
+
+void renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache& cache) {
+    Settings s = loadPreset(preset);
+    if (opt.view) s.output.view = *opt.view;
+    if (opt.width) s.output.width = *opt.width;
+    if (opt.height) s.output.height = *opt.height;
+    checkDeviceLimits(s, preset);
+    int before = gpu::seriousDebugMessageCount();
+    Renderer& r = cache.rendererFor(s.scene, preset.parent_path());
+    FrameStats stats = r.render(s);
+    Rgba8Image img{r.width(), r.height(), r.readRgba8()};
+    if (opt.debugContext && gpu::seriousDebugMessageCount() > before)
+        throw std::runtime_error(preset.string() + ": GL debug output reported errors (see above)");
+    std::string stem = preset.stem().string();
+    fs::path png = opt.outDir / (stem + ".png");
+    writeImageAtomic(png, img);
+    writeTextAtomic(opt.outDir / (stem + ".json"), toJsonText(stats));
+    std::printf("wrote %s (%dx%d, view %s, %d x %d² maps, shadow %.1f ms, main %.1f ms)\n",
+                png.string().c_str(), r.width(), r.height(), enumName(s.output.view).c_str(),
+                s.cascades.count, s.cascades.mapSize, stats.gpuShadowMs, stats.gpuMainMs);
+    std::fflush(stdout);
+}
+
+void prepareOutDir(const fs::path& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw std::runtime_error(dir.string() + ": cannot create output folder: " +
+                                 (ec ? ec.message() : "not a directory"));
+}
+}  // namespace
+
+int runRender(const RenderOptions& opt) {
+    std::unique_ptr<HeadlessContext> ctx;
+    try {
+        prepareOutDir(opt.outDir);
+        ctx = HeadlessContext::create(opt.debugContext);
+        if (opt.debugContext) gpu::enableDebugOutput();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+    }
+    SceneCache cache;
+    int failed = 0;
+    for (const fs::path& preset : opt.presets) {
+        try {
+            renderOne(opt, preset, cache);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: %s\nskipped %s\n", e.what(), preset.string().c_str());
+            ++failed;
+        }
+    }
+    if (failed)
+        std::fprintf(stderr, "%d of %zu presets failed\n", failed, opt.presets.size());
+    return failed ? 1 : 0;
+}
+
+}  // namespace st::app

@@ -1,0 +1,166 @@
+#include "renderer/csm/light_fit.h"
+
+#include "renderer/csm/frustum.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace st::csm {
+namespace {
+
+template <typename T>
+std::string str(T v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+[[noreturn]] void fail(const std::string& message) { throw std::invalid_argument(message); }
+
+void validateSplits(std::span<const float> splits, int index) {
+    if (splits.size() < 2) fail("splits must hold at least 2 values, got " + str(splits.size()));
+    const int count = static_cast<int>(splits.size()) - 1;
+    if (index < 0 || index >= count)
+        fail("index must be in 0.." + str(count - 1) + ", got " + str(index));
+    const float a = splits[static_cast<std::size_t>(index)];
+    const float b = splits[static_cast<std::size_t>(index) + 1];
+    if (!(a >= 0.0f) || !(a < b) || !std::isfinite(b))
+        fail("splits[" + str(index) + "] (" + str(a) + ") must be >= 0 and less than splits[" +
+             str(index + 1) + "] (" + str(b) + ")");
+}
+
+void validateFit(const FitParams& p) {
+    if (p.mapSize < 2) fail("cascades.mapSize must be >= 2, got " + str(p.mapSize));
+    const float d = p.zExtensionDistance;
+    if (p.zExtension == ZExtension::Distance && !(d >= 0.0f && std::isfinite(d)))
+        fail("cascades.zExtensionDistance must be >= 0, got " + str(d));
+}
+
+// Box before snapping, with the size the texel grid is derived from: for the sphere the exact
+// diameter (2r is exact in float; max - min of a translated box is not).
+struct SliceBox {
+    Aabb ls;
+    glm::vec2 size{0.0f};
+};
+
+// Tight AABB of the slice corners in ls: the crop box (m_i, M_i) of seed 000, as in seed 002.
+SliceBox cornerBox(const CameraParams& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
+    Corners ls = sliceCornersFromCamera(cam, vsNear, vsFar);
+    for (glm::vec3& p : ls) p = glm::vec3(lsView * glm::vec4(p, 1.0f));
+    const Aabb box = boundsOf(ls);
+    return {box, glm::vec2(box.extent())};
+}
+
+struct Sphere {
+    float vsDepth;  // centre on the view axis
+    float radius;
+};
+
+// Smallest sphere around the slice [n, f] (seed 001 uses a sphere; this centre is tighter than
+// the corners' centroid). By symmetry the centre is on the view axis at depth z; with
+// k^2 = tan^2(fovX/2) + tan^2(fovY/2), near and far corners are equidistant when
+// (z-n)^2 + n^2 k^2 = (f-z)^2 + f^2 k^2, i.e. z = (n+f)(1+k^2)/2; past f, the far face's circle
+// already holds the near corners, so z = f. Depends only on fov, aspect, n, f: the radius is
+// bit-identical whatever the camera's position or orientation.
+Sphere sliceSphere(const CameraParams& cam, double n, double f) {
+    const double ty = std::tan(0.5 * static_cast<double>(cam.fovY));
+    const double tx = ty * cam.aspect;
+    const double k2 = tx * tx + ty * ty;
+    const double z = std::min(f, 0.5 * (n + f) * (1.0 + k2));
+    const double r2 = std::max((z - n) * (z - n) + n * n * k2, (f - z) * (f - z) + f * f * k2);
+    // Up to 1/16 m (seed 001), after a 1e-5 relative pad so float-computed corners stay inside
+    // even when the exact radius is already a multiple of 1/16.
+    const double radius = std::ceil(std::sqrt(r2) * (1.0 + 1e-5) * 16.0) / 16.0;
+    return {static_cast<float>(z), static_cast<float>(radius)};
+}
+
+SliceBox sphereBox(const CameraParams& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
+    const Sphere s = sliceSphere(cam, vsNear, vsFar);
+    const glm::vec4 wsCentre = inverseViewMatrix(cam) * glm::vec4(0.0f, 0.0f, -s.vsDepth, 1.0f);
+    const glm::vec3 lsCentre(lsView * wsCentre);
+    return {{lsCentre - s.radius, lsCentre + s.radius}, glm::vec2(2.0f * s.radius)};
+}
+
+// Seed 001 texel snapping: min x,y moved down to whole texels, max = min + size, so the box only
+// ever moves by whole texels and a static caster rasterises to the same texels every frame.
+// Moving min down can uncover up to one texel at the max side, so the texel is size / (m - 1):
+// the m-texel box then still covers the unsnapped one.
+Aabb snapToTexels(Aabb box, glm::vec2 size, int mapSize) {
+    for (int axis = 0; axis < 2; ++axis) {
+        const float texel = size[axis] / static_cast<float>(mapSize - 1);
+        if (!(texel > 0.0f)) continue;
+        box.min[axis] = std::floor(box.min[axis] / texel) * texel;
+        box.max[axis] = box.min[axis] + texel * static_cast<float>(mapSize);
+    }
+    return box;
+}
+
+// How far toward the sun (+Z in ls) the box reaches beyond the slice (seed 000: casters outside
+// the slice; seed 003: light depth range from the scene bounds; seed 001: pancaking).
+Aabb extendZ(Aabb box, const glm::mat4& lsView, const FitParams& p) {
+    if (p.zExtension == ZExtension::Distance) {
+        box.max.z += p.zExtensionDistance;
+    } else if (p.zExtension == ZExtension::SceneBounds) {
+        // Union, not replace: the slice itself must stay inside even if the bounds miss it.
+        const Aabb lsScene = transformAabb(lsView, p.wsSceneBounds);
+        box.min.z = std::min(box.min.z, lsScene.min.z);
+        box.max.z = std::max(box.max.z, lsScene.max.z);
+    }
+    return box;  // None, Pancake: the slice's range (Pancake clamps casters to the near plane)
+}
+
+}  // namespace
+
+// The sun is at (cos el cos az, sin el, cos el sin az) from the scene; light travels opposite.
+glm::vec3 lightDirection(float azimuthDeg, float elevationDeg) {
+    if (!std::isfinite(azimuthDeg)) fail("light.azimuth must be finite, got " + str(azimuthDeg));
+    if (!std::isfinite(elevationDeg))
+        fail("light.elevation must be finite, got " + str(elevationDeg));
+    const float az = glm::radians(azimuthDeg);
+    const float el = glm::radians(elevationDeg);
+    const glm::vec3 wsToSun(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+    return -glm::normalize(wsToSun);
+}
+
+glm::mat4 lightViewMatrix(glm::vec3 wsLightDir) {
+    const float len2 = glm::dot(wsLightDir, wsLightDir);
+    if (!(len2 > 0.0f) || !std::isfinite(len2))
+        fail("wsLightDir must be finite and non-zero, got (" + str(wsLightDir.x) + ", " +
+             str(wsLightDir.y) + ", " + str(wsLightDir.z) + ")");
+    const glm::vec3 dir = wsLightDir / std::sqrt(len2);
+    // Eye at the origin: rotation only, so the texel grid moves with nothing but the light.
+    return glm::lookAt(glm::vec3(0.0f), dir, stableUp(dir));
+}
+
+CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, int index,
+                      glm::vec3 wsLightDir, const FitParams& p) {
+    validateCamera(cam);
+    validateSplits(splits, index);
+    validateFit(p);
+    CascadeFit out;
+    out.lsView = lightViewMatrix(wsLightDir);
+    const auto i = static_cast<std::size_t>(index);
+    out.vsNear = p.fit == FitMode::Scene ? splits[0] : splits[i];  // seed 004 "fit to scene"
+    out.vsFar = splits[i + 1];
+    SliceBox box = p.fit == FitMode::Sphere ? sphereBox(cam, out.vsNear, out.vsFar, out.lsView)
+                                            : cornerBox(cam, out.vsNear, out.vsFar, out.lsView);
+    if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize);
+    const Aabb ls = extendZ(box.ls, out.lsView, p);
+    out.lsBox = ls;
+    // ls looks down -Z: the near plane distance is -max.z, the far one -min.z.
+    out.lsProj = glm::ortho(ls.min.x, ls.max.x, ls.min.y, ls.max.y, -ls.max.z, -ls.min.z);
+    out.viewProj = out.lsProj * out.lsView;
+    out.texelWorldSize = (ls.max.x - ls.min.x) / static_cast<float>(p.mapSize);
+    return out;
+}
+
+}  // namespace st::csm

@@ -1,0 +1,53 @@
+#pragma once
+// Light view and the per-cascade orthographic fit (crop matrix).
+#include "renderer/csm/frustum.h"
+#include "renderer/csm/geometry.h"
+#include "renderer/settings/settings.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <span>
+
+namespace st::csm {
+
+// Direction the light travels (from the sun toward the scene), unit length, from the settings'
+// azimuth (degrees from +X toward +Z) and elevation (degrees above the horizon).
+glm::vec3 lightDirection(float azimuthDeg, float elevationDeg);
+
+// Rotation-only light view (see conventions.h): ls -Z is wsLightDir. The up vector is chosen
+// robustly (world +Y, or +Z when the light is within ~1 degree of vertical), so a sun straight
+// up or down gives a finite orthonormal matrix.
+glm::mat4 lightViewMatrix(glm::vec3 wsLightDir);
+
+struct FitParams {
+    FitMode fit = FitMode::Cascade;
+    bool stabilize = false;           // snap the box's x,y origin to whole texels
+    ZExtension zExtension = ZExtension::SceneBounds;
+    float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
+    int mapSize = 1024;               // texels per side
+    Aabb wsSceneBounds;               // all casters; used by SceneBounds
+};
+
+struct CascadeFit {
+    glm::mat4 lsView{1.0f};     // = lightViewMatrix(dir)
+    glm::mat4 lsProj{1.0f};     // orthographic, ls box -> clip
+    glm::mat4 viewProj{1.0f};   // lsProj * lsView: world -> light clip
+    Aabb lsBox;                 // box in light view space; +Z toward the sun (max.z is the near side)
+    float texelWorldSize = 0.0f;// metres per texel along x (== y for sphere fit)
+    float vsNear = 0.0f;        // view depth range the cascade covers (scene fit: from camera near)
+    float vsFar = 0.0f;
+};
+
+// Fits cascade `index` (slice [splits[index], splits[index+1]] of the camera, or
+// [splits[0], splits[index+1]] for FitMode::Scene) in light space:
+// - Cascade/Scene: tight AABB of the slice corners in ls (seed 000 crop matrix, seed 002).
+// - Sphere: a square box around the slice's bounding sphere, radius rounded up to 1/16 m so its
+//   size does not change when the camera rotates (seed 001).
+// - stabilize: min x,y moved down to a multiple of the texel size, max = min + size (seed 001).
+// - z: the slice's range, extended toward the sun by zExtensionDistance, or unioned with the
+//   scene bounds (seed 003, using transformAabb), or left as is for None/Pancake.
+CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, int index,
+                      glm::vec3 wsLightDir, const FitParams& p);
+
+}  // namespace st::csm

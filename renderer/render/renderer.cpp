@@ -1,0 +1,173 @@
+#include "renderer/render/renderer.h"
+
+#include "renderer/csm/conventions.h"
+#include "renderer/csm/culling.h"
+#include "renderer/render/shader_library.h"
+#include "shaders/limits.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <chrono>
+
+namespace st {
+namespace {
+GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+int viewCode(View v) {
+    switch (v) {
+    case View::Cascades: return ST_VIEW_CASCADES;
+    case View::Shadow: return ST_VIEW_SHADOW;
+    default: return ST_VIEW_SHADED;
+    }
+}
+
+int filterCode(FilterKind k) {
+    switch (k) {
+    case FilterKind::Hard: return ST_FILTER_HARD;
+    case FilterKind::PcfNxN: return ST_FILTER_PCF_NXN;
+    default: return ST_FILTER_PCF2X2;
+    }
+}
+}  // namespace
+
+Renderer::Renderer(const Scene& scene) : scene_(scene) {
+    depthProgram_ = gpu::linkProgram(shaderSource("shadow_depth.vert"),
+                                     shaderSource("shadow_depth.frag"), "shadow_depth");
+    mainProgram_ = gpu::linkProgram(shaderSource("main.vert"), shaderSource("main.frag"), "main");
+}
+
+void Renderer::ensureTarget(int width, int height) {
+    if (color_ && width == width_ && height == height_) return;
+    color_ = gpu::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(color_.id(), 1, GL_RGBA8, width, height);
+    depth_ = gpu::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+    if (!fbo_) fbo_ = gpu::createFramebuffer();
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    width_ = width;
+    height_ = height;
+}
+
+FrameStats Renderer::render(const Settings& s) {
+    auto t0 = std::chrono::steady_clock::now();
+    FrameStats stats;
+    stats.width = s.output.width;
+    stats.height = s.output.height;
+    stats.sceneTriangles = scene_.scene().triangleCount();
+    float aspect = float(s.output.width) / float(s.output.height);
+    plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds);
+    stats.splits = plan_.splits;
+    ensureTarget(s.output.width, s.output.height);
+    shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
+    stats.shadowMapBytes = shadowMaps_.bytes();
+    timers_.beginFrame(s.cascades.count + 1);
+    scene_.bindGeometry();
+    shadowPass(s, stats);
+    mainPass(s);
+    stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    for (int i = 0; i < s.cascades.count; ++i) {
+        stats.cascades[i].gpuMs = timers_.milliseconds(i);
+        stats.gpuShadowMs += stats.cascades[i].gpuMs;
+    }
+    stats.gpuMainMs = timers_.milliseconds(s.cascades.count);
+    return stats;
+}
+
+void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
+    gpu::DebugGroup group("shadow pass");
+    GLuint prog = depthProgram_.id();
+    glUseProgram(prog);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);  // thin and open casters must cast from both sides
+    bool pancake = s.cascades.zExtension == ZExtension::Pancake;
+    if (pancake) glEnable(GL_DEPTH_CLAMP);
+    for (int i = 0; i < s.cascades.count; ++i) {
+        const csm::CascadeFit& fit = plan_.cascades[i];
+        CascadeStats cs{fit.vsNear, fit.vsFar, fit.lsBox.extent(), fit.texelWorldSize};
+        timers_.begin(i);
+        shadowMaps_.bindLayerForWriting(i);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glProgramUniformMatrix4fv(prog, loc(prog, "uViewProj"), 1, GL_FALSE, glm::value_ptr(fit.viewProj));
+        for (const DrawItem& item : scene_.scene().draws) {
+            if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
+            scene_.draw(prog, item, false);
+            ++cs.casterDraws;
+            cs.casterTriangles += item.indexCount / 3;
+        }
+        timers_.end(i);
+        stats.cascades.push_back(cs);
+    }
+    glDisable(GL_DEPTH_CLAMP);
+}
+
+void Renderer::setShadowUniforms(const Settings& s) const {
+    GLuint p = mainProgram_.id();
+    int n = s.cascades.count;
+    glm::mat4 shadowMatrices[ST_MAX_CASCADES];
+    float texel[ST_MAX_CASCADES], range[ST_MAX_CASCADES];
+    for (int i = 0; i < n; ++i) {
+        const csm::CascadeFit& f = plan_.cascades[i];
+        shadowMatrices[i] = csm::clipToTexture() * f.viewProj;
+        texel[i] = f.texelWorldSize;
+        range[i] = f.lsBox.extent().z;
+    }
+    glProgramUniform1i(p, loc(p, "uCascadeCount"), n);
+    glProgramUniform1fv(p, loc(p, "uSplits"), n + 1, plan_.splits.data());
+    glProgramUniformMatrix4fv(p, loc(p, "uShadowMatrix"), n, GL_FALSE, glm::value_ptr(shadowMatrices[0]));
+    glProgramUniform1fv(p, loc(p, "uTexelWorld"), n, texel);
+    glProgramUniform1fv(p, loc(p, "uDepthRange"), n, range);
+    glProgramUniform1i(p, loc(p, "uSelection"), s.cascades.selection == Selection::Map ? ST_SELECT_MAP : ST_SELECT_INTERVAL);
+    glProgramUniform1f(p, loc(p, "uBlendBand"), s.cascades.blendBand);
+    glProgramUniform1i(p, loc(p, "uFilter"), filterCode(s.filter.kind));
+    glProgramUniform1i(p, loc(p, "uFilterSize"), s.filter.size);
+    glProgramUniform1f(p, loc(p, "uMapSize"), float(s.cascades.mapSize));
+    glProgramUniform1f(p, loc(p, "uBiasConstant"), s.bias.constant);
+    glProgramUniform1f(p, loc(p, "uBiasSlope"), s.bias.slope);
+    glProgramUniform1f(p, loc(p, "uNormalOffset"), s.bias.normalOffset);
+    glProgramUniform1i(p, loc(p, "uReceiverPlane"), s.bias.receiverPlane);
+}
+
+void Renderer::mainPass(const Settings& s) {
+    gpu::DebugGroup group("main pass");
+    GLuint p = mainProgram_.id();
+    timers_.begin(s.cascades.count);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+    glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glUseProgram(p);
+    glm::mat4 viewProj = plan_.csProj * plan_.vsView;
+    glm::vec3 toSun = -plan_.wsLightDir;
+    glProgramUniformMatrix4fv(p, loc(p, "uView"), 1, GL_FALSE, glm::value_ptr(plan_.vsView));
+    glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+    glProgramUniform3fv(p, loc(p, "uWsToSun"), 1, glm::value_ptr(toSun));
+    glProgramUniform1f(p, loc(p, "uIntensity"), s.light.intensity);
+    glProgramUniform1f(p, loc(p, "uAmbient"), s.light.ambient);
+    glProgramUniform1i(p, loc(p, "uViewMode"), viewCode(s.output.view));
+    setShadowUniforms(s);
+    shadowMaps_.bindForSampling();
+    glCullFace(GL_BACK);
+    for (const DrawItem& item : scene_.scene().draws) scene_.draw(p, item, true);
+    glDisable(GL_CULL_FACE);
+    glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
+    glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    timers_.end(s.cascades.count);
+}
+
+std::vector<std::uint8_t> Renderer::readRgba8() const {
+    std::vector<std::uint8_t> pixels(std::size_t(width_) * height_ * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(pixels.size()),
+                      pixels.data());
+    // GL's first row is the bottom one; images are stored top row first.
+    std::size_t row = std::size_t(width_) * 4;
+    for (int y = 0; y < height_ / 2; ++y)
+        std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
+                         pixels.begin() + (height_ - 1 - y) * row);
+    return pixels;
+}
+
+}  // namespace st

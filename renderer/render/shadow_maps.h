@@ -1,0 +1,29 @@
+#pragma once
+// The cascades' depth texture array (D32F, one layer per cascade) with its framebuffer and the two
+// compare samplers. Reallocated only when the layer count or size changes.
+#include "renderer/gpu/gl.h"
+
+#include <cstddef>
+
+namespace st {
+
+class ShadowMaps {
+public:
+    void ensure(int layers, int size);  // (re)allocates when layers or size differ
+    void bindLayerForWriting(int layer) const;
+    void bindForSampling() const;       // array on both shadow bindings, nearest + linear compare
+    GLuint texture() const { return depth_.id(); }
+    int layers() const { return layers_; }
+    int size() const { return size_; }
+    std::size_t bytes() const { return std::size_t(layers_) * size_ * size_ * 4; }
+
+private:
+    gpu::Texture depth_;
+    gpu::Framebuffer fbo_;
+    gpu::Sampler nearest_;
+    gpu::Sampler linear_;
+    int layers_ = 0;
+    int size_ = 0;
+};
+
+}  // namespace st

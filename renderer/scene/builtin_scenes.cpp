@@ -1,0 +1,83 @@
+// Deterministic procedural scenes: the few objects that show each effect, nothing more.
+#include "renderer/scene/scene.h"
+
+#include <functional>
+#include <map>
+
+namespace st {
+namespace {
+int addMaterial(Scene& s, glm::vec3 rgb) {
+    Material m;
+    m.baseColor = glm::vec4(rgb, 1.0f);
+    s.materials.push_back(m);
+    return static_cast<int>(s.materials.size()) - 1;
+}
+
+// Near boxes and thin poles (cascade 0 detail), a few medium-range buildings, a tall tower far
+// away whose long shadow only the last cascades can hold: 1 vs 4 cascades differ visibly.
+Scene makeYard() {
+    Scene s;
+    int ground = addMaterial(s, {0.55f, 0.6f, 0.45f});
+    int stone = addMaterial(s, {0.75f, 0.72f, 0.68f});
+    int wood = addMaterial(s, {0.6f, 0.42f, 0.28f});
+    int brick = addMaterial(s, {0.7f, 0.4f, 0.35f});
+    addGroundQuad(s, 300.0f, 0.0f, ground);
+    addBox(s, {-3.0f, 0.0f, 0.0f}, {-1.5f, 1.5f, 1.5f}, stone);
+    addBox(s, {1.0f, 0.0f, -2.0f}, {2.0f, 1.0f, -1.0f}, stone);
+    addBox(s, {-0.6f, 0.0f, -6.0f}, {0.6f, 2.5f, -4.8f}, wood);
+    for (int i = 0; i < 5; ++i) {  // thin poles: 8 cm wide, 3 m tall
+        float x = -4.0f + 2.0f * static_cast<float>(i);
+        addBox(s, {x - 0.04f, 0.0f, -9.0f}, {x + 0.04f, 3.0f, -8.92f}, wood);
+    }
+    addBox(s, {-18.0f, 0.0f, -35.0f}, {-10.0f, 6.0f, -27.0f}, brick);
+    addBox(s, {8.0f, 0.0f, -50.0f}, {16.0f, 9.0f, -42.0f}, brick);
+    addBox(s, {-4.0f, 0.0f, -80.0f}, {4.0f, 4.0f, -72.0f}, stone);
+    addBox(s, {-45.0f, 0.0f, -230.0f}, {-37.0f, 60.0f, -222.0f}, stone);  // the far tower
+    finalizeBounds(s);
+    return s;
+}
+
+// One 2 m box floating 2 m over a plane: its shadow is an exact projection for checks.
+Scene makeBoxOverPlane() {
+    Scene s;
+    int ground = addMaterial(s, {0.8f, 0.8f, 0.8f});
+    int box = addMaterial(s, {0.8f, 0.5f, 0.3f});
+    addGroundQuad(s, 20.0f, 0.0f, ground);
+    addBox(s, {-1.0f, 2.0f, -1.0f}, {1.0f, 4.0f, 1.0f}, box);
+    finalizeBounds(s);
+    return s;
+}
+
+Scene makeEmpty() {
+    Scene s;
+    addMaterial(s, {0.8f, 0.8f, 0.8f});
+    finalizeBounds(s);
+    return s;
+}
+
+const std::map<std::string, std::function<Scene()>>& builtins() {
+    static const std::map<std::string, std::function<Scene()>> table = {
+        {"yard", makeYard}, {"box-over-plane", makeBoxOverPlane}, {"empty", makeEmpty}};
+    return table;
+}
+}  // namespace
+
+std::vector<std::string> builtinSceneNames() {
+    std::vector<std::string> names;
+    for (const auto& [name, make] : builtins()) names.push_back(name);
+    return names;
+}
+
+Scene makeBuiltinScene(const std::string& name) {
+    auto it = builtins().find(name);
+    if (it == builtins().end()) {
+        std::string known;
+        for (const auto& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
+        throw SceneError("unknown built-in scene 'builtin:" + name + "' (known: " + known + ")");
+    }
+    Scene s = it->second();
+    s.name = "builtin:" + name;
+    return s;
+}
+
+}  // namespace st

@@ -1,0 +1,230 @@
+#include "renderer/settings/field_table.h"
+
+#include "renderer/settings/enum_names.h"
+
+#include <algorithm>
+#include <type_traits>
+#include <utility>
+
+namespace st {
+namespace {
+
+template <class T>
+FieldValue toValue(const T& value) {
+    if constexpr (std::is_enum_v<T>) {
+        return FieldValue(std::in_place_type<int>, static_cast<int>(value));
+    } else {
+        return FieldValue(std::in_place_type<T>, value);
+    }
+}
+
+template <class T>
+void fromValue(const FieldValue& value, T& out) {
+    if constexpr (std::is_enum_v<T>) {
+        out = static_cast<T>(std::get<int>(value));
+    } else {
+        out = std::get<T>(value);
+    }
+}
+
+// Getter and setter of one Settings member, as the last two designated initialisers of a row.
+#define ST_FIELD_ACCESS(member)                                        \
+    .get = [](const Settings& s) { return toValue(s.member); },        \
+    .set = [](Settings& s, const FieldValue& v) { fromValue(v, s.member); }
+
+using K = FieldKind;
+using C = ChangeClass;
+
+std::vector<FieldInfo> sceneAndCameraRows() {
+    return {
+        {.path = "scene", .label = "Scene",
+         .help = "Which geometry to shadow: \"builtin:NAME\" or a glTF path relative to the preset file.",
+         .kind = K::String, .nonEmpty = true, .change = C::Scene, ST_FIELD_ACCESS(scene)},
+        {.path = "notes", .label = "Notes",
+         .help = "Free text recording what of the reproduced system this preset does not match.",
+         .kind = K::String, .change = C::None, ST_FIELD_ACCESS(notes)},
+        {.path = "camera.position", .label = "Camera position",
+         .help = "Where the viewer stands; moving it shows how the cascades follow the camera.",
+         .unit = "m", .kind = K::Vec3, .min = -1e6, .max = 1e6, .step = 0.1, ST_FIELD_ACCESS(camera.position)},
+        {.path = "camera.target", .label = "Camera target",
+         .help = "The point the camera looks at, which sets the view direction the cascades are sliced along.",
+         .unit = "m", .kind = K::Vec3, .min = -1e6, .max = 1e6, .step = 0.1, ST_FIELD_ACCESS(camera.target)},
+        {.path = "camera.fovY", .label = "Vertical FOV",
+         .help = "A wider field of view widens every cascade slice and so lowers shadow resolution per pixel.",
+         .unit = "deg", .kind = K::Float, .min = 1, .max = 179, .step = 0.5, ST_FIELD_ACCESS(camera.fovY)},
+        {.path = "camera.nearPlane", .label = "Near plane",
+         .help = "Logarithmic splits crowd toward the near plane, so pushing it out frees resolution for far cascades.",
+         .unit = "m", .kind = K::Float, .min = 1e-4, .max = 1e4, .step = 0.01, ST_FIELD_ACCESS(camera.nearPlane)},
+        {.path = "camera.farPlane", .label = "Far plane",
+         .help = "The end of the view range; the last cascade ends here unless a shadow distance is set.",
+         .unit = "m", .kind = K::Float, .min = 1e-4, .max = 1e6, .step = 1, ST_FIELD_ACCESS(camera.farPlane)},
+    };
+}
+
+std::vector<FieldInfo> lightRows() {
+    return {
+        {.path = "light.azimuth", .label = "Sun azimuth",
+         .help = "Turns the sun about the vertical axis (from +X toward +Z) to test every orientation to the view.",
+         .unit = "deg", .kind = K::Float, .min = -360, .max = 360, .step = 1, ST_FIELD_ACCESS(light.azimuth)},
+        {.path = "light.elevation", .label = "Sun elevation",
+         .help = "Low suns stretch shadows and expose acne and peter-panning; 90 is straight overhead.",
+         .unit = "deg", .kind = K::Float, .min = -90, .max = 90, .step = 1, ST_FIELD_ACCESS(light.elevation)},
+        {.path = "light.intensity", .label = "Sun intensity",
+         .help = "Scales the direct light so shadow contrast can be judged against the ambient term.",
+         .kind = K::Float, .min = 0, .max = 10, .step = 0.01, ST_FIELD_ACCESS(light.intensity)},
+        {.path = "light.ambient", .label = "Ambient",
+         .help = "Constant, never shadowed light that keeps shadowed areas readable.",
+         .kind = K::Float, .min = 0, .max = 1, .step = 0.01, ST_FIELD_ACCESS(light.ambient)},
+    };
+}
+
+std::vector<FieldInfo> cascadeSplitRows() {
+    return {
+        {.path = "cascades.count", .label = "Cascades",
+         .help = "More cascades spread shadow map resolution more evenly over depth, at one shadow pass each.",
+         .kind = K::Int, .min = 1, .max = 8, .step = 1, .change = C::Reallocate, ST_FIELD_ACCESS(cascades.count)},
+        {.path = "cascades.scheme", .label = "Split scheme",
+         .help = "How the view depth range is divided: uniform, logarithmic, their lambda blend, or manual depths.",
+         .kind = K::Enum, .enumNames = enumNames<SplitScheme>(), ST_FIELD_ACCESS(cascades.scheme)},
+        {.path = "cascades.lambda", .label = "Lambda",
+         .help = "Practical-split blend: 1 is fully logarithmic, 0 uniform; higher gives near cascades more resolution.",
+         .kind = K::Float, .min = 0, .max = 1, .step = 0.01, ST_FIELD_ACCESS(cascades.lambda)},
+        {.path = "cascades.manualSplits", .label = "Manual splits",
+         .help = "View-depth ends of cascades 0..count-2 for the manual scheme, to copy a system's exact splits.",
+         .unit = "m", .kind = K::FloatList, .min = 0, .max = 1e6, .step = 0.1,
+         ST_FIELD_ACCESS(cascades.manualSplits)},
+        {.path = "cascades.shadowDistance", .label = "Shadow distance",
+         .help = "Ends the last cascade before the far plane so no resolution goes to distant shadows; 0 = far plane.",
+         .unit = "m", .kind = K::Float, .min = 0, .max = 1e6, .step = 1, ST_FIELD_ACCESS(cascades.shadowDistance)},
+        {.path = "cascades.mapSize", .label = "Map size",
+         .help = "Texels per side of each cascade's map; doubling halves the texel footprint at 4x the memory.",
+         .unit = "texels", .kind = K::Int, .min = 256, .max = 8192, .step = 1, .powerOfTwo = true,
+         .change = C::Reallocate, ST_FIELD_ACCESS(cascades.mapSize)},
+    };
+}
+
+std::vector<FieldInfo> cascadeFitRows() {
+    return {
+        {.path = "cascades.fit", .label = "Fit",
+         .help = "How each light box is fitted: tight to its slice, from the near plane, or a rotation-stable sphere.",
+         .kind = K::Enum, .enumNames = enumNames<FitMode>(), ST_FIELD_ACCESS(cascades.fit)},
+        {.path = "cascades.stabilize", .label = "Stabilize",
+         .help = "Snaps each light box to whole texels so shadow edges do not shimmer as the camera moves.",
+         .kind = K::Bool, ST_FIELD_ACCESS(cascades.stabilize)},
+        {.path = "cascades.zExtension", .label = "Z extension",
+         .help = "How far each light box reaches toward the light, so casters outside the slice still cast into it.",
+         .kind = K::Enum, .enumNames = enumNames<ZExtension>(), ST_FIELD_ACCESS(cascades.zExtension)},
+        {.path = "cascades.zExtensionDistance", .label = "Z extension distance",
+         .help = "Reach toward the light for the distance extension: too short clips casters, too long wastes depth.",
+         .unit = "m", .kind = K::Float, .min = 0, .max = 1e5, .step = 1, ST_FIELD_ACCESS(cascades.zExtensionDistance)},
+        {.path = "cascades.selection", .label = "Selection",
+         .help = "How a pixel picks its cascade: by view-depth interval, or the first map whose box contains it.",
+         .kind = K::Enum, .enumNames = enumNames<Selection>(), ST_FIELD_ACCESS(cascades.selection)},
+        {.path = "cascades.blendBand", .label = "Blend band",
+         .help = "Fraction of each cascade's depth range cross-faded into the next, to hide the seam between them.",
+         .kind = K::Float, .min = 0, .max = 0.5, .step = 0.01, ST_FIELD_ACCESS(cascades.blendBand)},
+    };
+}
+
+std::vector<FieldInfo> filterAndBiasRows() {
+    return {
+        {.path = "filter.kind", .label = "Filter",
+         .help = "Shadow edge filtering: one hard tap, the hardware 2x2 comparison, or an NxN grid of taps.",
+         .kind = K::Enum, .enumNames = enumNames<FilterKind>(), ST_FIELD_ACCESS(filter.kind)},
+        {.path = "filter.size", .label = "Filter size",
+         .help = "Taps per side of the NxN filter; larger softens edges and hides aliasing at quadratic cost.",
+         .unit = "taps", .kind = K::Int, .min = 3, .max = 9, .step = 2, .odd = true, ST_FIELD_ACCESS(filter.size)},
+        {.path = "bias.constant", .label = "Constant bias",
+         .help = "Moves receivers toward the light to remove acne; too much detaches shadows (peter-panning).",
+         .unit = "m", .kind = K::Float, .min = 0, .max = 10, .step = 0.001, ST_FIELD_ACCESS(bias.constant)},
+        {.path = "bias.slope", .label = "Slope bias",
+         .help = "Bias that grows with the tangent of the angle to the light, where acne is worst.",
+         .unit = "texels", .kind = K::Float, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.slope)},
+        {.path = "bias.normalOffset", .label = "Normal offset",
+         .help = "Moves receivers along their normal, removing acne with less peter-panning than depth bias.",
+         .unit = "texels", .kind = K::Float, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.normalOffset)},
+        {.path = "bias.receiverPlane", .label = "Receiver-plane bias",
+         .help = "Derives depth bias from screen-space depth derivatives, which suits large filter kernels.",
+         .kind = K::Bool, ST_FIELD_ACCESS(bias.receiverPlane)},
+    };
+}
+
+std::vector<FieldInfo> outputRows() {
+    return {
+        {.path = "output.width", .label = "Width",
+         .help = "Output image width; image comparisons and metrics are computed at this resolution.",
+         .unit = "px", .kind = K::Int, .min = 16, .max = 8192, .step = 1, .change = C::Output,
+         ST_FIELD_ACCESS(output.width)},
+        {.path = "output.height", .label = "Height",
+         .help = "Output image height; image comparisons and metrics are computed at this resolution.",
+         .unit = "px", .kind = K::Int, .min = 16, .max = 8192, .step = 1, .change = C::Output,
+         ST_FIELD_ACCESS(output.height)},
+        {.path = "output.view", .label = "View",
+         .help = "What the output shows: the shaded scene, cascade index colours, or the raw shadow term.",
+         .kind = K::Enum, .enumNames = enumNames<View>(), ST_FIELD_ACCESS(output.view)},
+    };
+}
+
+#undef ST_FIELD_ACCESS
+
+std::vector<FieldInfo> buildTable() {
+    std::vector<FieldInfo> table;
+    for (auto&& rows : {sceneAndCameraRows(), lightRows(), cascadeSplitRows(), cascadeFitRows(),
+                        filterAndBiasRows(), outputRows()}) {
+        table.insert(table.end(), rows.begin(), rows.end());
+    }
+    return table;
+}
+
+}  // namespace
+
+const std::vector<FieldInfo>& fieldTable() {
+    static const std::vector<FieldInfo> table = buildTable();
+    return table;
+}
+
+const FieldInfo* findField(std::string_view path) {
+    const auto& table = fieldTable();
+    const auto it = std::find_if(table.begin(), table.end(), [&](const FieldInfo& f) { return f.path == path; });
+    return it == table.end() ? nullptr : &*it;
+}
+
+std::vector<const FieldInfo*> changedFields(const Settings& a, const Settings& b) {
+    std::vector<const FieldInfo*> changed;
+    for (const FieldInfo& field : fieldTable()) {
+        if (field.get(a) != field.get(b)) changed.push_back(&field);
+    }
+    return changed;
+}
+
+ChangeClass classifyChange(const Settings& a, const Settings& b) {
+    ChangeClass worst = ChangeClass::None;
+    for (const FieldInfo* field : changedFields(a, b)) worst = std::max(worst, field->change);
+    return worst;
+}
+
+std::string_view changeClassName(ChangeClass change) {
+    switch (change) {
+        case ChangeClass::None: return "none";
+        case ChangeClass::Uniform: return "uniform";
+        case ChangeClass::Reallocate: return "reallocate";
+        case ChangeClass::Output: return "output";
+        case ChangeClass::Scene: return "scene";
+    }
+    return "<invalid>";
+}
+
+std::string_view fieldKindName(FieldKind kind) {
+    switch (kind) {
+        case FieldKind::Float: return "float";
+        case FieldKind::Int: return "int";
+        case FieldKind::Bool: return "bool";
+        case FieldKind::Enum: return "enum";
+        case FieldKind::String: return "string";
+        case FieldKind::Vec3: return "vec3";
+        case FieldKind::FloatList: return "float list";
+    }
+    return "<invalid>";
+}
+
+}  // namespace st

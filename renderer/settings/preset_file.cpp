@@ -1,0 +1,132 @@
+// Preset files: reading with JSON errors at line:column, and atomic writing (temp file + rename).
+#include "renderer/settings/settings_json.h"
+#include "renderer/settings/validation.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace fs = std::filesystem;
+
+namespace st {
+namespace {
+
+// "file:line:col: " for the byte at `offset` (0-based) of `text`; offset == size means end of text.
+std::string locate(const std::string& file, const std::string& text, std::size_t offset) {
+    offset = std::min(offset, text.size());
+    const auto begin = text.begin();
+    const auto line = 1 + std::count(begin, begin + static_cast<std::ptrdiff_t>(offset), '\n');
+    const auto lastNewline = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
+    const std::size_t lineStart = lastNewline == std::string::npos ? 0 : lastNewline + 1;
+    const std::size_t column = offset - lineStart + 1;
+    return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+}
+
+// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
+std::string parseReason(const std::string& what) {
+    const auto start = what.find("parse error");
+    const auto colon = what.find(": ", start == std::string::npos ? 0 : start);
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+// Offset of the byte nlohmann stopped at: its `byte` is 1-based and often one past the token,
+// on the line end that finished it; point back at the token's line then.
+std::size_t errorOffset(const std::string& text, std::size_t byte) {
+    std::size_t offset = byte == 0 ? 0 : byte - 1;
+    if (offset > 0 && offset < text.size() && text[offset] == '\n') --offset;
+    return offset;
+}
+
+// "number overflow parsing '1e999'" carries no position: find the literal in the text.
+std::size_t overflowOffset(const std::string& text, const std::string& what) {
+    const auto open = what.find('\'');
+    const auto close = what.rfind('\'');
+    if (open == std::string::npos || close <= open) return text.size();
+    const auto at = text.find(what.substr(open + 1, close - open - 1));
+    return at == std::string::npos ? text.size() : at;
+}
+
+nlohmann::json parseText(const std::string& text, const std::string& file) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw SettingsError(locate(file, text, errorOffset(text, e.byte)) + "invalid JSON: " + parseReason(e.what()));
+    } catch (const nlohmann::json::out_of_range& e) {
+        const std::string what = e.what();
+        throw SettingsError(locate(file, text, overflowOffset(text, what)) + "invalid JSON: " +
+                            what.substr(what.find(']') + 2));
+    }
+}
+
+std::string readText(const fs::path& file) {
+    const std::string name = file.string();
+    std::error_code ec;
+    const auto status = fs::status(file, ec);
+    if (!fs::exists(status)) throw SettingsError(name + ": cannot read preset: no such file");
+    if (fs::is_directory(status)) throw SettingsError(name + ": cannot read preset: is a directory, not a JSON file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw SettingsError(name + ": cannot read preset: " + std::strerror(errno));
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw SettingsError(name + ": cannot read preset: read error");
+    return text;
+}
+
+// Writes all of `text` to `file` and flushes it to disk; "" on success, else the reason (and the
+// file is removed again).
+std::string writeSynced(const fs::path& file, const std::string& text) {
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) return std::string("cannot create ") + file.string() + ": " + std::strerror(errno);
+    std::string error;
+    for (std::size_t done = 0; done < text.size() && error.empty();) {
+        const auto written = ::write(fd, text.data() + done, text.size() - done);
+        if (written < 0 && errno != EINTR) error = std::string("cannot write ") + file.string() + ": " + std::strerror(errno);
+        if (written > 0) done += static_cast<std::size_t>(written);
+    }
+    if (error.empty() && ::fsync(fd) != 0) error = std::string("cannot sync ") + file.string() + ": " + std::strerror(errno);
+    if (::close(fd) != 0 && error.empty()) error = std::string("cannot close ") + file.string() + ": " + std::strerror(errno);
+    if (!error.empty()) ::unlink(file.c_str());
+    return error;
+}
+
+std::string presetText(const Settings& s, const std::string& name) {
+    try {
+        return toOrderedJson(s).dump(2) + "\n";
+    } catch (const nlohmann::json::exception& e) {  // e.g. a string that is not valid UTF-8
+        throw SettingsError(name + ": cannot save preset: " + e.what());
+    }
+}
+
+}  // namespace
+
+Settings loadPreset(const fs::path& file) {
+    const std::string name = file.string();
+    const std::string text = readText(file);
+    return fromJson(parseText(text, name), name);
+}
+
+void savePresetAtomic(const Settings& s, const fs::path& file) {
+    const std::string name = file.string();
+    if (auto problems = validate(s); !problems.empty()) {
+        for (auto& problem : problems) problem = name + ": cannot save invalid settings: " + problem;
+        throw SettingsError(problems);
+    }
+    const std::string text = presetText(s, name);
+    const fs::path temp = name + ".tmp-" + std::to_string(::getpid());
+    if (auto error = writeSynced(temp, text); !error.empty()) {
+        throw SettingsError(name + ": cannot save preset: " + error);
+    }
+    std::error_code ec;
+    fs::rename(temp, file, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw SettingsError(name + ": cannot save preset: cannot rename " + temp.string() + " over it: " + ec.message());
+    }
+}
+
+}  // namespace st

@@ -1,0 +1,216 @@
+// JSON -> Settings: strict reading. Structure (version, unknown keys, types) is checked here;
+// ranges and cross-field rules come from validation.cpp so they are written once.
+#include "renderer/settings/enum_names.h"
+#include "renderer/settings/settings_json.h"
+#include "renderer/settings/validation.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+namespace st {
+namespace {
+
+using Json = nlohmann::json;
+using Issues = std::vector<SettingsIssue>;
+
+// A JSON value for "got ..." in messages: its text, cut short, with its type where that helps.
+std::string describe(const Json& value) {
+    std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    if (value.is_string()) return "string " + text;
+    if (value.is_array()) return "array " + text;
+    if (value.is_object()) return "object " + text;
+    return text;
+}
+
+std::string join(const std::string& prefix, std::string_view key) {
+    return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
+}
+
+// The keys allowed directly under `prefix` ("" = top level), in table order.
+std::vector<std::string> childKeys(const std::string& prefix) {
+    std::vector<std::string> keys;
+    if (prefix.empty()) keys.emplace_back("version");
+    for (const FieldInfo& field : fieldTable()) {
+        std::string_view rest = field.path;
+        if (!prefix.empty()) {
+            if (!rest.starts_with(prefix + ".")) continue;
+            rest.remove_prefix(prefix.size() + 1);
+        }
+        std::string key(rest.substr(0, rest.find('.')));
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(std::move(key));
+    }
+    return keys;
+}
+
+std::string listKeys(const std::vector<std::string>& keys) {
+    std::string text;
+    for (const auto& key : keys) text += (text.empty() ? "" : ", ") + key;
+    return text;
+}
+
+// Reports unknown keys and groups ("camera") that are not objects, at every level.
+void checkKeys(const Json& object, const std::string& prefix, Issues& issues) {
+    for (const auto& [key, value] : object.items()) {
+        const std::string path = join(prefix, key);
+        const bool dotted = key.find('.') != std::string::npos;  // "camera.fovY" is not camera/fovY
+        if (!dotted && (path == "version" || findField(path))) continue;
+        if (dotted || childKeys(path).empty()) {
+            issues.push_back({path, std::string("unknown key") + (dotted ? " (nest objects; keys have no dots)" : "") +
+                                        ", expected one of: " + listKeys(childKeys(prefix))});
+        } else if (!value.is_object()) {
+            issues.push_back({path, "expected an object, got " + describe(value)});
+        } else {
+            checkKeys(value, path, issues);
+        }
+    }
+}
+
+void checkVersion(const Json& root, Issues& issues) {
+    const auto it = root.find("version");
+    if (it == root.end()) {
+        issues.push_back({"version", "missing; every preset must say \"version\": " + std::to_string(kPresetVersion)});
+    } else if (!it->is_number_integer()) {
+        issues.push_back({"version", "expected the integer " + std::to_string(kPresetVersion) + ", got " + describe(*it)});
+    } else if (*it != kPresetVersion) {
+        issues.push_back({"version", "unsupported version " + describe(*it) + ", this build reads version " +
+                                         std::to_string(kPresetVersion)});
+    }
+}
+
+// The value at a dotted path, or nullptr if it (or an enclosing object) is missing.
+const Json* lookup(const Json& root, std::string_view path) {
+    const Json* node = &root;
+    for (std::size_t start = 0; start <= path.size();) {
+        const std::size_t dot = std::min(path.find('.', start), path.size());
+        if (!node->is_object()) return nullptr;
+        const auto it = node->find(std::string(path.substr(start, dot - start)));
+        if (it == node->end()) return nullptr;
+        node = &*it;
+        start = dot + 1;
+    }
+    return node;
+}
+
+std::optional<float> readFloat(const FieldInfo& field, const Json& value, const std::string& path, Issues& issues) {
+    if (!value.is_number()) {
+        issues.push_back({path, "expected a number, got " + describe(value)});
+        return std::nullopt;
+    }
+    const auto number = value.get<double>();
+    if (auto reason = checkNumber(field, number)) {
+        issues.push_back({path, *reason});
+        return std::nullopt;
+    }
+    return static_cast<float>(number);
+}
+
+std::optional<int> readInt(const FieldInfo& field, const Json& value, const std::string& path, Issues& issues) {
+    if (!value.is_number_integer()) {
+        issues.push_back({path, "expected an integer, got " + describe(value)});
+        return std::nullopt;
+    }
+    const double number = value.is_number_unsigned() ? static_cast<double>(value.get<std::uint64_t>())
+                                                     : static_cast<double>(value.get<std::int64_t>());
+    if (auto reason = checkNumber(field, number)) {
+        issues.push_back({path, *reason});
+        return std::nullopt;
+    }
+    return static_cast<int>(value.get<std::int64_t>());
+}
+
+std::optional<int> readEnum(const FieldInfo& field, const Json& value, const std::string& path, Issues& issues) {
+    const auto index = value.is_string() ? enumIndex(field.enumNames, value.get<std::string>()) : std::nullopt;
+    if (!index) issues.push_back({path, "must be one of " + quotedNames(field.enumNames) + ", got " + describe(value)});
+    return index;
+}
+
+std::optional<std::vector<float>> readFloats(const FieldInfo& field, const Json& value, Issues& issues) {
+    const bool isVec3 = field.kind == FieldKind::Vec3;
+    if (!value.is_array() || (isVec3 && value.size() != 3)) {
+        issues.push_back({std::string(field.path),
+                          (isVec3 ? "expected an array of 3 numbers, got " : "expected an array of numbers, got ") +
+                              describe(value)});
+        return std::nullopt;
+    }
+    std::vector<float> floats;
+    const std::size_t before = issues.size();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string path = std::string(field.path) + "[" + std::to_string(i) + "]";
+        floats.push_back(readFloat(field, value[i], path, issues).value_or(0.0f));
+    }
+    if (issues.size() != before) return std::nullopt;
+    return floats;
+}
+
+template <class T>
+std::optional<FieldValue> wrap(std::optional<T> value) {
+    if (!value) return std::nullopt;
+    return FieldValue(std::in_place_type<T>, std::move(*value));
+}
+
+std::optional<FieldValue> readBool(const FieldInfo& field, const Json& value, Issues& issues) {
+    if (value.is_boolean()) return FieldValue(std::in_place_type<bool>, value.get<bool>());
+    issues.push_back({std::string(field.path), "expected true or false, got " + describe(value)});
+    return std::nullopt;
+}
+
+std::optional<FieldValue> readString(const FieldInfo& field, const Json& value, Issues& issues) {
+    if (value.is_string()) return FieldValue(std::in_place_type<std::string>, value.get<std::string>());
+    issues.push_back({std::string(field.path), "expected a string, got " + describe(value)});
+    return std::nullopt;
+}
+
+std::optional<FieldValue> readValue(const FieldInfo& field, const Json& value, Issues& issues) {
+    const std::string path(field.path);
+    switch (field.kind) {
+        case FieldKind::Float: return wrap(readFloat(field, value, path, issues));
+        case FieldKind::Int: return wrap(readInt(field, value, path, issues));
+        case FieldKind::Enum: return wrap(readEnum(field, value, path, issues));
+        case FieldKind::Bool: return readBool(field, value, issues);
+        case FieldKind::String: return readString(field, value, issues);
+        case FieldKind::FloatList: return wrap(readFloats(field, value, issues));
+        case FieldKind::Vec3: {
+            const auto floats = readFloats(field, value, issues);
+            if (!floats) return std::nullopt;
+            return FieldValue(glm::vec3((*floats)[0], (*floats)[1], (*floats)[2]));
+        }
+    }
+    return std::nullopt;
+}
+
+std::vector<std::string> withSource(const Issues& issues, const std::string& sourceName) {
+    std::vector<std::string> messages;
+    for (const auto& issue : issues) messages.push_back(sourceName + ": " + issue.message());
+    return messages;
+}
+
+}  // namespace
+
+Settings fromJson(const nlohmann::json& json, const std::string& sourceName) {
+    if (!json.is_object()) {
+        throw SettingsError(sourceName + ": (top level): expected an object, got " + describe(json));
+    }
+    Issues issues;
+    checkVersion(json, issues);
+    checkKeys(json, "", issues);
+    Settings settings;
+    PathSet unread;  // present but unusable: keep the default and skip the rules that read it
+    for (const FieldInfo& field : fieldTable()) {
+        const Json* value = lookup(json, field.path);
+        if (!value) continue;
+        if (auto read = readValue(field, *value, issues)) {
+            field.set(settings, *read);
+        } else {
+            unread.emplace(field.path);
+        }
+    }
+    const auto ruleIssues = findIssues(settings, unread);
+    issues.insert(issues.end(), ruleIssues.begin(), ruleIssues.end());
+    if (!issues.empty()) throw SettingsError(withSource(issues, sourceName));
+    return settings;
+}
+
+}  // namespace st

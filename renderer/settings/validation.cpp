@@ -1,0 +1,193 @@
+#include "renderer/settings/validation.h"
+
+#include "renderer/settings/enum_names.h"
+#include "renderer/settings/number_text.h"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace st {
+namespace {
+
+bool isFloatKind(FieldKind kind) {
+    return kind == FieldKind::Float || kind == FieldKind::Vec3 || kind == FieldKind::FloatList;
+}
+
+std::string rangeText(const FieldInfo& field) {
+    return formatNumber(field.min) + ".." + formatNumber(field.max);
+}
+
+// Float fields: the value is checked as the float it will be stored as, against float bounds.
+std::optional<std::string> checkFloatRange(const FieldInfo& field, double value) {
+    if (std::fabs(value) > static_cast<double>(std::numeric_limits<float>::max())) {
+        return "must be in " + rangeText(field) + ", got " + formatNumber(value);
+    }
+    const auto stored = static_cast<float>(value);
+    if (stored < static_cast<float>(field.min) || stored > static_cast<float>(field.max)) {
+        return "must be in " + rangeText(field) + ", got " + formatFloat(stored);
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> checkIntRules(const FieldInfo& field, double value) {
+    if (value < field.min || value > field.max) {
+        return "must be in " + rangeText(field) + ", got " + formatNumber(value);
+    }
+    const auto n = static_cast<std::int64_t>(value);
+    if (field.powerOfTwo && (n & (n - 1)) != 0) {
+        return "must be a power of two in " + rangeText(field) + ", got " + formatNumber(value);
+    }
+    if (field.odd && n % 2 == 0) return "must be odd, got " + formatNumber(value);
+    return std::nullopt;
+}
+
+void checkElements(const FieldInfo& field, const float* values, std::size_t count,
+                   std::vector<SettingsIssue>& out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (auto reason = checkNumber(field, values[i])) {
+            out.push_back({std::string(field.path) + "[" + std::to_string(i) + "]", *reason});
+        }
+    }
+}
+
+void checkField(const FieldInfo& field, const FieldValue& value, std::vector<SettingsIssue>& out) {
+    std::optional<std::string> reason;
+    switch (field.kind) {
+        case FieldKind::Float: reason = checkNumber(field, std::get<float>(value)); break;
+        case FieldKind::Int: reason = checkNumber(field, std::get<int>(value)); break;
+        case FieldKind::Bool: break;
+        case FieldKind::Enum: {
+            const int index = std::get<int>(value);
+            if (index < 0 || static_cast<std::size_t>(index) >= field.enumNames.size()) {
+                reason = "must be one of " + quotedNames(field.enumNames) + ", got invalid value " + std::to_string(index);
+            }
+            break;
+        }
+        case FieldKind::String:
+            if (field.nonEmpty && std::get<std::string>(value).empty()) reason = "must not be empty";
+            break;
+        case FieldKind::Vec3: checkElements(field, &std::get<glm::vec3>(value).x, 3, out); break;
+        case FieldKind::FloatList: {
+            const auto& list = std::get<std::vector<float>>(value);
+            checkElements(field, list.data(), list.size(), out);
+            break;
+        }
+    }
+    if (reason) out.push_back({std::string(field.path), *reason});
+}
+
+// ---- Cross-field rules ------------------------------------------------------------------------
+
+struct CrossRule {
+    std::string_view description;
+    std::vector<std::string_view> inputs;  // field paths the rule reads
+    void (*check)(const Settings&, std::vector<SettingsIssue>&);
+};
+
+void checkNearFar(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (s.camera.nearPlane < s.camera.farPlane) return;
+    out.push_back({"camera.farPlane", "must be greater than camera.nearPlane (" + formatFloat(s.camera.nearPlane) +
+                                          "), got " + formatFloat(s.camera.farPlane)});
+}
+
+void checkTarget(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (s.camera.target != s.camera.position) return;
+    out.push_back({"camera.target", "must differ from camera.position, or the view direction is undefined"});
+}
+
+void checkShadowDistance(const Settings& s, std::vector<SettingsIssue>& out) {
+    const float d = s.cascades.shadowDistance;
+    if (d == 0.0f || (d > s.camera.nearPlane && d <= s.camera.farPlane)) return;
+    out.push_back({"cascades.shadowDistance", "must be 0 (the far plane) or in (camera.nearPlane, camera.farPlane] = (" +
+                                                  formatFloat(s.camera.nearPlane) + ", " +
+                                                  formatFloat(s.camera.farPlane) + "], got " + formatFloat(d)});
+}
+
+void checkManualSplits(const Settings& s, std::vector<SettingsIssue>& out) {
+    const CascadeSettings& c = s.cascades;
+    if (c.scheme != SplitScheme::Manual) return;
+    const auto needed = static_cast<std::size_t>(c.count - 1);
+    if (c.manualSplits.size() != needed) {
+        out.push_back({"cascades.manualSplits", "the manual scheme with " + std::to_string(c.count) +
+                                                    " cascades needs exactly " + std::to_string(needed) +
+                                                    " split depths, got " + std::to_string(c.manualSplits.size())});
+        return;
+    }
+    const bool byDistance = c.shadowDistance > 0.0f;
+    const float end = byDistance ? c.shadowDistance : s.camera.farPlane;
+    const std::string interval = std::string("(camera.nearPlane, ") +
+                                 (byDistance ? "cascades.shadowDistance" : "camera.farPlane") + ") = (" +
+                                 formatFloat(s.camera.nearPlane) + ", " + formatFloat(end) + ")";
+    for (std::size_t i = 0; i < needed; ++i) {
+        const float split = c.manualSplits[i];
+        const std::string path = "cascades.manualSplits[" + std::to_string(i) + "]";
+        if (i > 0 && !(split > c.manualSplits[i - 1])) {
+            out.push_back({path, "must be greater than the previous split (" + formatFloat(c.manualSplits[i - 1]) +
+                                     "), got " + formatFloat(split)});
+        } else if (!(split > s.camera.nearPlane && split < end)) {
+            out.push_back({path, "must be in " + interval + ", got " + formatFloat(split)});
+        }
+    }
+}
+
+const std::vector<CrossRule>& crossRules() {
+    static const std::vector<CrossRule> rules = {
+        {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
+        {"camera.target must differ from camera.position.", {"camera.position", "camera.target"}, checkTarget},
+        {"cascades.shadowDistance must be 0 (use the far plane) or in (camera.nearPlane, camera.farPlane].",
+         {"camera.nearPlane", "camera.farPlane", "cascades.shadowDistance"},
+         checkShadowDistance},
+        {"With scheme \"manual\", cascades.manualSplits holds exactly count-1 strictly increasing depths in "
+         "(camera.nearPlane, end), end being cascades.shadowDistance if > 0, else camera.farPlane.",
+         {"camera.nearPlane", "camera.farPlane", "cascades.shadowDistance", "cascades.count", "cascades.scheme",
+          "cascades.manualSplits"},
+         checkManualSplits},
+    };
+    return rules;
+}
+
+// "cascades.manualSplits[2]" -> "cascades.manualSplits"
+std::string_view fieldOf(std::string_view path) { return path.substr(0, path.find('[')); }
+
+bool anyIn(const std::vector<std::string_view>& paths, const PathSet& set) {
+    for (const auto path : paths) {
+        if (set.contains(path)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::optional<std::string> checkNumber(const FieldInfo& field, double value) {
+    if (!std::isfinite(value)) return "must be finite, got " + formatNumber(value);
+    if (isFloatKind(field.kind)) return checkFloatRange(field, value);
+    return checkIntRules(field, value);
+}
+
+std::vector<SettingsIssue> findIssues(const Settings& s, const PathSet& untrusted) {
+    std::vector<SettingsIssue> issues;
+    for (const FieldInfo& field : fieldTable()) {
+        if (!untrusted.contains(field.path)) checkField(field, field.get(s), issues);
+    }
+    PathSet bad = untrusted;
+    for (const CrossRule& rule : crossRules()) {
+        for (const auto& issue : issues) bad.emplace(fieldOf(issue.path));
+        if (!anyIn(rule.inputs, bad)) rule.check(s, issues);
+    }
+    return issues;
+}
+
+std::vector<std::string> validate(const Settings& s) {
+    std::vector<std::string> messages;
+    for (const auto& issue : findIssues(s)) messages.push_back(issue.message());
+    return messages;
+}
+
+std::vector<std::string_view> crossFieldRuleDescriptions() {
+    std::vector<std::string_view> descriptions;
+    for (const CrossRule& rule : crossRules()) descriptions.push_back(rule.description);
+    return descriptions;
+}
+
+}  // namespace st

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every Debian package shadowtune needs to build, test and run the editor.
+# Idempotent: exits at once when everything is present. Run as root (or with sudo).
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libglm-dev nlohmann-json3-dev libcli11-dev libtinygltf-dev libstb-dev
+  libopenimageio-dev openimageio-tools
+  libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  libglfw3-dev libimgui-dev
+  libembree-dev
+  libgtest-dev googletest
+  xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo=""
+[[ $(id -u) -ne 0 ]] && sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup: done"

@@ -1,0 +1,43 @@
+#version 450 core
+#include "limits.h"
+#include "shadow_sampling.glsl"
+
+layout(binding = ST_BINDING_BASE_COLOR) uniform sampler2D uBaseColorTex;
+uniform vec4 uBaseColor;
+uniform bool uHasTexture;
+uniform bool uAlphaMask;
+uniform float uAlphaCutoff;
+uniform vec3 uWsToSun;  // unit vector toward the sun
+uniform float uIntensity;
+uniform float uAmbient;
+uniform int uViewMode;
+
+in vec3 vWsPosition;
+in vec3 vWsNormal;
+in vec2 vUv;
+in float vVsDepth;
+out vec4 oColor;
+
+// Seed 002's red/green/blue first, then distinct hues for cascades 4..8.
+const vec3 kTints[ST_MAX_CASCADES] = vec3[](
+    vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 1.0, 0.2),
+    vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0), vec3(1.0, 0.6, 0.1), vec3(0.6, 0.3, 1.0));
+
+vec3 encodeSrgb(vec3 c) { return pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)); }
+
+void main() {
+    vec4 base = uBaseColor;
+    if (uHasTexture) base *= texture(uBaseColorTex, vUv);
+    if (uAlphaMask && base.a < uAlphaCutoff) discard;
+    vec3 n = normalize(vWsNormal);
+    if (!gl_FrontFacing) n = -n;  // double-sided surfaces are lit from the side we see
+    float nDotL = dot(n, uWsToSun);
+    ShadowResult s = shadowFactor(vWsPosition, n, nDotL, vVsDepth);
+    float direct = uIntensity * max(nDotL, 0.0) * s.factor;
+    vec3 color = base.rgb * (uAmbient + direct);
+    if (uViewMode == ST_VIEW_CASCADES && s.cascade >= 0)
+        color = kTints[s.cascade] * (0.25 + 0.75 * (uAmbient + direct));
+    else if (uViewMode == ST_VIEW_SHADOW)
+        color = vec3(nDotL > 0.0 ? s.factor : 0.0);
+    oColor = vec4(encodeSrgb(color), 1.0);
+}

@@ -1,0 +1,111 @@
+// Cascade selection, biasing and filtering of the shadow-map test. The CPU twin of the
+// selection rules is renderer/csm/selection.cpp; keep them in step.
+layout(binding = ST_BINDING_SHADOW_NEAREST) uniform sampler2DArrayShadow uShadowNearest;
+layout(binding = ST_BINDING_SHADOW_LINEAR) uniform sampler2DArrayShadow uShadowLinear;
+
+uniform int uCascadeCount;
+uniform float uSplits[ST_MAX_CASCADES + 1];      // view depths, metres
+uniform mat4 uShadowMatrix[ST_MAX_CASCADES];     // world -> shadow texture space
+uniform float uTexelWorld[ST_MAX_CASCADES];      // metres per texel
+uniform float uDepthRange[ST_MAX_CASCADES];      // metres from light-box near to far
+uniform int uSelection;
+uniform float uBlendBand;
+uniform int uFilter;
+uniform int uFilterSize;
+uniform float uMapSize;
+uniform float uBiasConstant;   // metres
+uniform float uBiasSlope;      // texels per unit tan(angle)
+uniform float uNormalOffset;   // texels
+uniform bool uReceiverPlane;
+
+struct ShadowResult {
+    float factor;  // 1 lit, 0 shadowed
+    int cascade;   // -1 beyond the shadow range
+};
+
+vec3 shadowCoord(int i, vec3 wsPos, vec3 wsNormal) {
+    vec3 p = wsPos + wsNormal * (uNormalOffset * uTexelWorld[i]);
+    return (uShadowMatrix[i] * vec4(p, 1.0)).xyz;
+}
+
+// Interval-based selection (seed 000, seed 004): the slice the view depth falls in.
+int selectInterval(float vsDepth) {
+    for (int i = 0; i < uCascadeCount; ++i)
+        if (vsDepth <= uSplits[i + 1]) return i;
+    return -1;
+}
+
+float edgeMargin() {
+    float radius = uFilter == ST_FILTER_PCF_NXN ? float(uFilterSize / 2) + 1.0 : 1.0;
+    return radius / uMapSize;
+}
+
+// Map-based selection (seed 003, seed 004): the first map whose tile holds the point.
+int selectMap(vec3 wsPos, vec3 wsNormal) {
+    float m = edgeMargin();
+    for (int i = 0; i < uCascadeCount; ++i) {
+        vec3 ts = shadowCoord(i, wsPos, wsNormal);
+        if (all(greaterThanEqual(ts, vec3(m, m, 0.0))) && all(lessThanEqual(ts, vec3(1.0 - m, 1.0 - m, 1.0))))
+            return i;
+    }
+    return -1;
+}
+
+// Seed 004, "Derivative-based receiver plane depth bias": depth slope per unit of shadow-map
+// uv from the screen-space derivatives, dz/duv = J^-T (dz/dx, dz/dy), J = d(uv)/d(screen).
+vec2 receiverPlaneSlope(vec3 ts) {
+    vec3 dx = dFdx(ts);
+    vec3 dy = dFdy(ts);
+    mat2 j = mat2(dx.xy, dy.xy);
+    float det = determinant(j);
+    if (abs(det) < 1e-12) return vec2(0.0);
+    return transpose(inverse(j)) * vec2(dx.z, dy.z);
+}
+
+float sampleCascade(int i, vec3 ts, vec2 dzduv, float tanTheta) {
+    float biasMetres = uBiasConstant + uBiasSlope * uTexelWorld[i] * tanTheta;
+    float z = min(ts.z - biasMetres / uDepthRange[i], 1.0);
+    if (uFilter == ST_FILTER_HARD) return texture(uShadowNearest, vec4(ts.xy, float(i), z));
+    if (uFilter == ST_FILTER_PCF2X2) return texture(uShadowLinear, vec4(ts.xy, float(i), z));
+    int r = uFilterSize / 2;
+    float sum = 0.0;
+    for (int y = -r; y <= r; ++y)
+        for (int x = -r; x <= r; ++x) {
+            vec2 duv = vec2(x, y) / uMapSize;
+            float zt = uReceiverPlane ? z + dot(duv, dzduv) : z;
+            sum += texture(uShadowLinear, vec4(ts.xy + duv, float(i), zt));
+        }
+    return sum / float((2 * r + 1) * (2 * r + 1));
+}
+
+// 0 in the cascade's interior, rising to 1 at its far end over the blend band (seed 004).
+float blendWeight(int i, float vsDepth, vec3 ts) {
+    if (uBlendBand <= 0.0 || i + 1 >= uCascadeCount) return 0.0;
+    float f;
+    if (uSelection == ST_SELECT_INTERVAL) {
+        f = (uSplits[i + 1] - vsDepth) / (uSplits[i + 1] - uSplits[i]);
+    } else {
+        vec2 e = min(ts.xy, 1.0 - ts.xy);
+        f = 2.0 * min(e.x, e.y);
+    }
+    return 1.0 - clamp(f / uBlendBand, 0.0, 1.0);
+}
+
+ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth) {
+    int c = uSelection == ST_SELECT_INTERVAL ? selectInterval(vsDepth) : selectMap(wsPos, wsNormal);
+    // Coordinates and derivatives for c and c+1 are computed unconditionally: derivatives are
+    // only defined in uniform control flow.
+    int ci = clamp(c, 0, uCascadeCount - 1);
+    int cn = min(ci + 1, uCascadeCount - 1);
+    vec3 ts = shadowCoord(ci, wsPos, wsNormal);
+    vec3 tsNext = shadowCoord(cn, wsPos, wsNormal);
+    vec2 slope = receiverPlaneSlope(ts);
+    vec2 slopeNext = receiverPlaneSlope(tsNext);
+    if (c < 0) return ShadowResult(1.0, -1);
+    float cosT = clamp(nDotL, 1e-3, 1.0);
+    float tanTheta = min(sqrt(1.0 - cosT * cosT) / cosT, 10.0);
+    float f = sampleCascade(c, ts, slope, tanTheta);
+    float w = blendWeight(c, vsDepth, ts);
+    if (w > 0.0) f = mix(f, sampleCascade(cn, tsNext, slopeNext, tanTheta), w);
+    return ShadowResult(f, c);
+}

@@ -1,0 +1,92 @@
+#include "renderer/csm/frustum.h"
+#include "renderer/csm/selection.h"
+#include "renderer/csm/splits.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace st::csm {
+namespace {
+
+TEST(SelectionTest, IntervalAtBoundariesAndOutside) {
+    const std::vector<float> z = {1.0f, 10.0f, 50.0f, 200.0f};
+    EXPECT_EQ(selectCascadeInterval(z, 0.5f), -1);  // in front of the first cascade
+    EXPECT_EQ(selectCascadeInterval(z, 1.0f), 0);
+    EXPECT_EQ(selectCascadeInterval(z, 9.999f), 0);
+    EXPECT_EQ(selectCascadeInterval(z, 10.0f), 1);  // a boundary belongs to the next cascade
+    EXPECT_EQ(selectCascadeInterval(z, 49.9f), 1);
+    EXPECT_EQ(selectCascadeInterval(z, 50.0f), 2);
+    EXPECT_EQ(selectCascadeInterval(z, 200.0f), 2);  // the last end is still shadowed
+    EXPECT_EQ(selectCascadeInterval(z, 200.01f), -1);
+    EXPECT_EQ(selectCascadeInterval(z, std::numeric_limits<float>::quiet_NaN()), -1);
+    EXPECT_THROW(selectCascadeInterval(std::vector<float>{1.0f}, 1.0f), std::invalid_argument);
+}
+
+struct Fitted {
+    CameraParams cam;
+    std::vector<float> splits;
+    std::vector<CascadeFit> fits;
+};
+
+Fitted fitted(FitMode mode) {
+    Fitted f;
+    SplitParams s;
+    s.nearPlane = f.cam.nearPlane;
+    s.farPlane = f.cam.farPlane;
+    f.splits = computeSplits(s);
+    FitParams p;
+    p.fit = mode;
+    for (int i = 0; i < 4; ++i)
+        f.fits.push_back(fitCascade(f.cam, f.splits, i, lightDirection(35.0f, 40.0f), p));
+    return f;
+}
+
+TEST(SelectionTest, MapPicksCascade0NearTheCameraAndNoneFarOutside) {
+    const Fitted f = fitted(FitMode::Cascade);
+    const glm::vec3 forward = glm::normalize(f.cam.wsTarget - f.cam.wsPosition);
+    EXPECT_EQ(selectCascadeMap(f.fits, f.cam.wsPosition + 1.0f * forward), 0);
+    EXPECT_EQ(selectCascadeMap(f.fits, f.cam.wsPosition + 5000.0f * forward), -1);
+    EXPECT_EQ(selectCascadeMap(f.fits, glm::vec3(1e5f, 0.0f, 0.0f)), -1);
+}
+
+TEST(SelectionTest, MapNeverPicksALaterCascadeThanInterval) {
+    // Each box holds its own slice, so the first box that holds a point is at most the point's
+    // interval cascade (seed 004: map selection can pick a finer cascade, never a coarser one).
+    const Fitted f = fitted(FitMode::Cascade);
+    const glm::mat4 wsFromVs = inverseViewMatrix(f.cam);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const float ty = std::tan(0.5f * f.cam.fovY);
+    for (int trial = 0; trial < 500; ++trial) {
+        const float d = f.splits.front() + (f.splits.back() - f.splits.front()) * u(rng) * u(rng);
+        const glm::vec3 vs((2 * u(rng) - 1) * d * ty * f.cam.aspect, (2 * u(rng) - 1) * d * ty, -d);
+        const glm::vec3 ws(wsFromVs * glm::vec4(vs, 1.0f));
+        const int interval = selectCascadeInterval(f.splits, d);
+        const int map = selectCascadeMap(f.fits, ws);
+        ASSERT_GE(interval, 0);
+        EXPECT_GE(map, 0) << "depth " << d;
+        EXPECT_LE(map, interval) << "depth " << d;
+    }
+}
+
+TEST(SelectionTest, MapMarginExcludesTheBorder) {
+    const Fitted f = fitted(FitMode::Sphere);
+    // A point on cascade 0's min-x face (ts x = 0): inside with no margin, outside with one.
+    const CascadeFit& c0 = f.fits[0];
+    const glm::vec3 lsPoint(c0.lsBox.min.x, c0.lsBox.center().y, c0.lsBox.center().z);
+    const glm::vec3 ws = glm::transpose(glm::mat3(c0.lsView)) * lsPoint;
+    const std::vector<CascadeFit> only0 = {c0};
+    EXPECT_EQ(selectCascadeMap(only0, ws + glm::transpose(glm::mat3(c0.lsView)) *
+                                               glm::vec3(1e-3f, 0, 0)),
+              0);
+    EXPECT_EQ(selectCascadeMap(only0, ws, 0.01f), -1);
+}
+
+}  // namespace
+}  // namespace st::csm

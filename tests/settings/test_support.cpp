@@ -1,0 +1,70 @@
+#include "tests/settings/test_support.h"
+
+#include "renderer/settings/settings_json.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+
+namespace st::test {
+
+Settings everyFieldChanged() {
+    Settings s;
+    s.scene = "scenes/sponza/Sponza.gltf";
+    s.notes = "No contact hardening; the source blends cascades in screen space.";
+    s.camera = {.position = {1.5f, 2.25f, -3.0f}, .target = {0.5f, 0.0f, 1.0f}, .fovY = 45.5f,
+                .nearPlane = 0.25f, .farPlane = 250.0f};
+    s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f};
+    s.cascades = {.count = 3, .scheme = SplitScheme::Manual, .lambda = 0.8f, .manualSplits = {10.0f, 40.5f},
+                  .shadowDistance = 150.0f, .mapSize = 2048, .fit = FitMode::Sphere, .stabilize = true,
+                  .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
+                  .blendBand = 0.1f};
+    s.filter = {.kind = FilterKind::PcfNxN, .size = 5};
+    s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
+    s.output = {.width = 800, .height = 600, .view = View::Cascades};
+    return s;
+}
+
+nlohmann::json preset(const nlohmann::json& patch) {
+    nlohmann::json json = {{"version", 1}};
+    json.merge_patch(patch);
+    return json;
+}
+
+std::vector<std::string> readErrors(const nlohmann::json& json) {
+    try {
+        (void)fromJson(json, kSource);
+    } catch (const SettingsError& e) {
+        return e.messages();
+    }
+    ADD_FAILURE() << "fromJson accepted " << json.dump();
+    return {};
+}
+
+::testing::AssertionResult hasMessage(const std::vector<std::string>& messages, std::string_view part) {
+    const bool found = std::any_of(messages.begin(), messages.end(),
+                                   [&](const std::string& m) { return m.find(part) != std::string::npos; });
+    if (found) return ::testing::AssertionSuccess();
+    auto failure = ::testing::AssertionFailure() << "no message contains \"" << part << "\"; messages:";
+    for (const auto& m : messages) failure << "\n  " << m;
+    return failure;
+}
+
+void ScratchDir::SetUp() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir = std::filesystem::temp_directory_path() /
+          ("settings_test-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+}
+
+void ScratchDir::TearDown() { std::filesystem::remove_all(dir); }
+
+std::vector<std::string> ScratchDir::entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+}  // namespace st::test

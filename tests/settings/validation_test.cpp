@@ -1,0 +1,86 @@
+// validate() on in-memory Settings: the editor's check, same rules as the JSON reader.
+#include "renderer/settings/validation.h"
+#include "tests/settings/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace st {
+namespace {
+
+using test::hasMessage;
+
+TEST(ValidationTest, DefaultAndChangedSettingsAreValid) {
+    EXPECT_TRUE(validate(Settings{}).empty());
+    EXPECT_TRUE(validate(test::everyFieldChanged()).empty());
+}
+
+TEST(ValidationTest, MessagesArePathColonReason) {
+    Settings s;
+    s.cascades.count = 12;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"cascades.count: must be in 1..8, got 12"});
+}
+
+TEST(ValidationTest, NonFiniteValues) {
+    Settings s;
+    s.cascades.lambda = std::numeric_limits<float>::quiet_NaN();
+    s.camera.target.z = std::numeric_limits<float>::infinity();
+    const auto messages = validate(s);
+    EXPECT_TRUE(hasMessage(messages, "cascades.lambda: must be finite, got nan"));
+    EXPECT_TRUE(hasMessage(messages, "camera.target[2]: must be finite, got inf"));
+}
+
+TEST(ValidationTest, EdgesOfRangesAreInclusive) {
+    Settings s;
+    s.camera.fovY = 179.0f;
+    s.camera.nearPlane = 1e-4f;  // stored as a float just below 1e-4: still accepted
+    s.cascades.blendBand = 0.5f;
+    s.cascades.mapSize = 8192;
+    s.filter.size = 9;
+    s.light.elevation = -90.0f;
+    EXPECT_TRUE(validate(s).empty()) << validate(s)[0];
+    s.camera.fovY = 179.01f;
+    EXPECT_TRUE(hasMessage(validate(s), "camera.fovY: must be in 1..179, got 179.01"));
+}
+
+TEST(ValidationTest, InvalidEnumValue) {
+    Settings s;
+    s.output.view = static_cast<View>(9);
+    EXPECT_TRUE(hasMessage(validate(s), "output.view: must be one of \"shaded\", \"cascades\", \"shadow\", got invalid "
+                                        "value 9"));
+}
+
+TEST(ValidationTest, CrossFieldRules) {
+    Settings s;
+    s.camera.farPlane = 0.05f;
+    EXPECT_EQ(validate(s), std::vector<std::string>{
+                               "camera.farPlane: must be greater than camera.nearPlane (0.1), got 0.05"});
+    s = Settings{};
+    s.cascades.scheme = SplitScheme::Manual;
+    EXPECT_TRUE(hasMessage(validate(s), "cascades.manualSplits: the manual scheme with 4 cascades needs exactly 3"));
+    s.cascades.manualSplits = {5.0f, 20.0f, 80.0f};
+    EXPECT_TRUE(validate(s).empty());
+}
+
+TEST(ValidationTest, RulesSkipFieldsThatBrokeTheirOwnRule) {
+    Settings s;
+    s.cascades.count = 20;  // out of range: the manual-split count rule must not also complain
+    s.cascades.scheme = SplitScheme::Manual;
+    EXPECT_EQ(validate(s).size(), 1u);
+}
+
+TEST(ValidationTest, CheckNumberTakesDoublesBeforeNarrowing) {
+    const FieldInfo& far = *findField("camera.farPlane");
+    EXPECT_EQ(checkNumber(far, 100.0), std::nullopt);
+    EXPECT_EQ(checkNumber(far, 1e39), "must be in 0.0001..1000000, got 1e+39");
+    EXPECT_EQ(checkNumber(*findField("cascades.mapSize"), 768), "must be a power of two in 256..8192, got 768");
+}
+
+TEST(ValidationTest, CrossFieldRulesAreDescribed) {
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 4u);
+    for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
+}
+
+}  // namespace
+}  // namespace st
