@@ -17,6 +17,8 @@ void addRenderCommand(CLI::App& cli, st::app::RenderOptions& opt, std::string& v
     render->add_option("--view", view, "Override the view: shaded, cascades, shadow");
     render->add_option("--size", size, "Override the output size, WxH (e.g. 1280x720)");
     render->add_flag("--debug-gl", opt.debugContext, "Debug context; GL errors fail the preset");
+    render->add_option("--frames", opt.frames, "Render each preset N times and print median times (benchmark)")
+        ->check(CLI::Range(1, 10000));
 }
 
 bool applyOverrides(st::app::RenderOptions& opt, const std::string& view, const std::string& size) {

@@ -9,6 +9,8 @@
 #include "renderer/settings/enum_names.h"
 #include "renderer/settings/settings_json.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -45,6 +47,34 @@ void checkDeviceLimits(const Settings& s, const fs::path& preset) {
                                  std::to_string(maxSize));
 }
 
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Renders `frames` more times after the first (warm-up) frame; returns the last frame's
+// statistics with every time replaced by its median, and prints the medians.
+FrameStats benchmark(Renderer& r, const Settings& s, int frames, const fs::path& preset) {
+    std::vector<double> shadow, main, cpu, wall;
+    FrameStats stats;
+    for (int f = 0; f < frames; ++f) {
+        auto t0 = std::chrono::steady_clock::now();
+        stats = r.render(s);
+        glFinish();
+        wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        shadow.push_back(stats.gpuShadowMs);
+        main.push_back(stats.gpuMainMs);
+        cpu.push_back(stats.cpuMs);
+    }
+    stats.gpuShadowMs = median(shadow);
+    stats.gpuMainMs = median(main);
+    stats.cpuMs = median(cpu);
+    std::printf("%s: median of %d frames at %dx%d: frame %.2f ms (GPU shadow %.2f ms, GPU main %.2f ms, CPU submit %.2f ms)\n",
+                preset.string().c_str(), frames, s.output.width, s.output.height, median(wall),
+                stats.gpuShadowMs, stats.gpuMainMs, stats.cpuMs);
+    return stats;
+}
+
 void renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache& cache) {
     Settings s = loadPreset(preset);
     if (opt.view) s.output.view = *opt.view;
@@ -54,6 +84,7 @@ void renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache& cac
     int before = gpu::seriousDebugMessageCount();
     Renderer& r = cache.rendererFor(s.scene, preset.parent_path());
     FrameStats stats = r.render(s);
+    if (opt.frames > 1) stats = benchmark(r, s, opt.frames, preset);
     Rgba8Image img{r.width(), r.height(), r.readRgba8()};
     if (opt.debugContext && gpu::seriousDebugMessageCount() > before)
         throw std::runtime_error(preset.string() + ": GL debug output reported errors (see above)");

@@ -13,7 +13,12 @@ struct RenderOptions {
     std::filesystem::path outDir = "out";
     std::optional<View> view;        // overrides every preset's view
     std::optional<int> width, height; // overrides every preset's output size
+#ifdef NDEBUG
     bool debugContext = false;       // KHR_debug; any serious message fails the preset
+#else
+    bool debugContext = true;        // always on in debug builds: GL errors are bugs
+#endif
+    int frames = 1;                  // > 1: render repeatedly and report median times
 };
 
 // Renders each preset to OUT/<name>.png and OUT/<name>.json, one line per image on stdout.

@@ -89,6 +89,8 @@ OJson presetJsonSchemaOrdered() {
     root["required"] = OJson::array({"version"});
     root["properties"]["version"] = OJson{{"description", "Preset format version; this build reads version 1."},
                                           {"const", kPresetVersion}};
+    root["properties"]["$schema"] = OJson{{"description", "Optional: where editors find this schema (ignored by shadowtune)."},
+                                          {"type", "string"}};
     for (const FieldInfo& field : fieldTable()) place(root, field.path, fieldSchema(field));
     return root;
 }

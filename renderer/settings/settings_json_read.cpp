@@ -56,6 +56,8 @@ void checkKeys(const Json& object, const std::string& prefix, Issues& issues) {
     for (const auto& [key, value] : object.items()) {
         const std::string path = join(prefix, key);
         const bool dotted = key.find('.') != std::string::npos;  // "camera.fovY" is not camera/fovY
+        // "$schema" lets editors find presets/schema.json; it carries no setting.
+        if (path == "$schema" && value.is_string()) continue;
         if (!dotted && (path == "version" || findField(path))) continue;
         if (dotted || childKeys(path).empty()) {
             issues.push_back({path, std::string("unknown key") + (dotted ? " (nest objects; keys have no dots)" : "") +
