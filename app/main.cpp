@@ -14,7 +14,7 @@ void addRenderCommand(CLI::App& cli, st::app::RenderOptions& opt, std::string& v
     CLI::App* render = cli.add_subcommand("render", "Replay presets headless (EGL) into PNG images and frame statistics");
     render->add_option("presets", opt.presets, "Preset JSON files")->required();
     render->add_option("--out", opt.outDir, "Output folder (created if missing)")->capture_default_str();
-    render->add_option("--view", view, "Override the view: shaded, cascades, shadow");
+    render->add_option("--view", view, "Override the view: shaded, cascades, shadow, texel-density");
     render->add_option("--size", size, "Override the output size, WxH (e.g. 1280x720)");
     render->add_flag("--debug-gl", opt.debugContext, "Debug context; GL errors fail the preset");
     render->add_option("--frames", opt.frames, "Render each preset N times and print median times (benchmark)")

@@ -17,6 +17,7 @@ int viewCode(View v) {
     switch (v) {
     case View::Cascades: return ST_VIEW_CASCADES;
     case View::Shadow: return ST_VIEW_SHADOW;
+    case View::TexelDensity: return ST_VIEW_TEXEL_DENSITY;
     default: return ST_VIEW_SHADED;
     }
 }

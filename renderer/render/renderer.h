@@ -29,7 +29,10 @@ public:
     GLuint colorTexture() const { return color_.id(); }
     GLuint framebuffer() const { return fbo_.id(); }
     GLuint shadowMapTexture() const { return shadowMaps_.texture(); }
-    const csm::CascadePlan& plan() const { return plan_; }
+    GLuint depthTexture() const { return depth_.id(); }  // main pass depth, D32F
+    const csm::CascadePlan& plan() const { return plan_; }  // of the last render()
+    const SceneGpu& sceneGpu() const { return scene_; }
+    const ShadowMaps& shadowMaps() const { return shadowMaps_; }
     int width() const { return width_; }
     int height() const { return height_; }
 

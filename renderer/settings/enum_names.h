@@ -37,7 +37,7 @@ struct EnumNames<FilterKind> {
 };
 template <>
 struct EnumNames<View> {
-    static constexpr std::array<std::string_view, 3> names{"shaded", "cascades", "shadow"};
+    static constexpr std::array<std::string_view, 4> names{"shaded", "cascades", "shadow", "texel-density"};
 };
 
 template <class E>

@@ -20,7 +20,9 @@ enum class FitMode { Cascade, Scene, Sphere };
 enum class ZExtension { None, Distance, SceneBounds, Pancake };
 enum class Selection { Interval, Map };  // seed 004: view depth vs first map that contains the point
 enum class FilterKind { Hard, Pcf2x2, PcfNxN };
-enum class View { Shaded, Cascades, Shadow };
+// TexelDensity: screen pixels per shadow texel as a heat map (blue < 1/4 wasted, green 1 ideal,
+// red > 1 perspective aliasing; DESIGN.md "Aliasing / texel density").
+enum class View { Shaded, Cascades, Shadow, TexelDensity };
 
 struct CameraSettings {
     glm::vec3 position{0.0f, 1.7f, 10.0f};  // ws, metres
