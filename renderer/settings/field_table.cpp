@@ -160,7 +160,7 @@ std::vector<FieldInfo> outputRows() {
          .unit = "px", .kind = K::Int, .min = 16, .max = 8192, .step = 1, .change = C::Output,
          ST_FIELD_ACCESS(output.height)},
         {.path = "output.view", .label = "View",
-         .help = "What the output shows: the shaded scene, cascade index colours, the raw shadow term, or screen pixels per shadow texel (blue wasted, green 1:1, red aliasing).",
+         .help = "Shaded scene, cascade colours, raw shadow term, or screen pixels per shadow texel (heat map).",
          .kind = K::Enum, .enumNames = enumNames<View>(), ST_FIELD_ACCESS(output.view)},
     };
 }
