@@ -1,0 +1,9 @@
+#pragma once
+// Each command registers its own subcommand; its callback stores the process exit code.
+#include <CLI/CLI.hpp>
+
+namespace st::app {
+
+void addRenderCommand(CLI::App& cli, int& exitCode);
+
+}  // namespace st::app
