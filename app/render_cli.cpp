@@ -46,7 +46,7 @@ void addRenderCommand(CLI::App& cli, int& exitCode) {
     CLI::App* render = cli.add_subcommand("render", "Replay presets headless (EGL) into PNG images and frame statistics");
     render->add_option("presets", args->opt.presets, "Preset JSON files")->required();
     render->add_option("--out", args->opt.outDir, "Output folder (created if missing)")->capture_default_str();
-    render->add_option("--view", args->view, "Override the view: shaded, cascades, shadow, texel-density");
+    render->add_option("--view", args->view, "Override the view: shaded, cascades, shadow, texel-density, side");
     render->add_option("--size", args->size, "Override the output size, WxH (e.g. 1280x720)");
     render->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
     render->add_option("--frames", args->opt.frames, "Render each preset N times and print median times (benchmark)")

@@ -37,20 +37,7 @@ Renderer::Renderer(const Scene& scene) : scene_(scene) {
     mainProgram_ = gpu::linkProgram(shaderSource("main.vert"), shaderSource("main.frag"), "main");
 }
 
-void Renderer::ensureTarget(int width, int height) {
-    if (color_ && width == width_ && height == height_) return;
-    color_ = gpu::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(color_.id(), 1, GL_RGBA8, width, height);
-    depth_ = gpu::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
-    if (!fbo_) fbo_ = gpu::createFramebuffer();
-    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
-    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    width_ = width;
-    height_ = height;
-}
-
-FrameStats Renderer::render(const Settings& s) {
+FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     auto t0 = std::chrono::steady_clock::now();
     FrameStats stats;
     stats.width = s.output.width;
@@ -59,13 +46,16 @@ FrameStats Renderer::render(const Settings& s) {
     float aspect = float(s.output.width) / float(s.output.height);
     plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds);
     stats.splits = plan_.splits;
-    ensureTarget(s.output.width, s.output.height);
+    target_.ensure(s.output.width, s.output.height);
     shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
     stats.shadowMapBytes = shadowMaps_.bytes();
     timers_.beginFrame(s.cascades.count + 1);
     scene_.bindGeometry();
     shadowPass(s, stats);
-    mainPass(s);
+    if (s.output.view == View::Side)
+        sidePass(s, orbit, target_);
+    else
+        mainPass(s, plan_.csProj * plan_.vsView, target_);
     stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (int i = 0; i < s.cascades.count; ++i) {
         stats.cascades[i].gpuMs = timers_.milliseconds(i);
@@ -131,16 +121,29 @@ void Renderer::setShadowUniforms(const Settings& s) const {
     glProgramUniform1i(p, loc(p, "uReceiverPlane"), s.bias.receiverPlane);
 }
 
-void Renderer::mainPass(const Settings& s) {
+void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out) {
+    timers_.beginFrame(s.cascades.count + 1);
+    scene_.bindGeometry();
+    sidePass(s, orbit, out);
+}
+
+void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target) {
+    csm::CameraParams cam = sideCamera(plan_, orbit, float(target.width()) / float(target.height()));
+    glm::mat4 viewProj = csm::projectionMatrix(cam) * csm::viewMatrix(cam);
+    mainPass(s, viewProj, target);
+    target.bind();
+    lines_.draw(cascadeWireframes(plan_), viewProj);
+}
+
+void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target) {
     gpu::DebugGroup group("main pass");
     GLuint p = mainProgram_.id();
     timers_.begin(s.cascades.count);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, width_, height_);
+    target.bind();
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glUseProgram(p);
-    glm::mat4 viewProj = plan_.csProj * plan_.vsView;
+    scene_.bindGeometry();
     glm::vec3 toSun = -plan_.wsLightDir;
     glProgramUniformMatrix4fv(p, loc(p, "uView"), 1, GL_FALSE, glm::value_ptr(plan_.vsView));
     glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
@@ -156,19 +159,6 @@ void Renderer::mainPass(const Settings& s) {
     glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
     glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
     timers_.end(s.cascades.count);
-}
-
-std::vector<std::uint8_t> Renderer::readRgba8() const {
-    std::vector<std::uint8_t> pixels(std::size_t(width_) * height_ * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(pixels.size()),
-                      pixels.data());
-    // GL's first row is the bottom one; images are stored top row first.
-    std::size_t row = std::size_t(width_) * 4;
-    for (int y = 0; y < height_ / 2; ++y)
-        std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
-                         pixels.begin() + (height_ - 1 - y) * row);
-    return pixels;
 }
 
 }  // namespace st

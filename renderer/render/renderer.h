@@ -6,8 +6,11 @@
 #include "renderer/gpu/gl.h"
 #include "renderer/render/frame_stats.h"
 #include "renderer/render/gpu_timer.h"
+#include "renderer/render/line_pass.h"
+#include "renderer/render/offscreen_target.h"
 #include "renderer/render/scene_gpu.h"
 #include "renderer/render/shadow_maps.h"
+#include "renderer/render/side_view.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 
@@ -21,25 +24,31 @@ public:
     // Needs a current GL 4.5 core context; the scene must outlive the renderer.
     explicit Renderer(const Scene& scene);
 
-    // Renders into the offscreen target, sized from s.output. Throws std::invalid_argument for
-    // settings the cascade math rejects.
-    FrameStats render(const Settings& s);
+    // Renders into the offscreen target, sized from s.output. View::Side shows the scene from
+    // `orbit` with the cascades' wireframes instead of the main camera's image. Throws
+    // std::invalid_argument for settings the cascade math rejects.
+    FrameStats render(const Settings& s, const OrbitCamera& orbit = {});
 
-    std::vector<std::uint8_t> readRgba8() const;  // width*height*4, top row first
-    GLuint colorTexture() const { return color_.id(); }
-    GLuint framebuffer() const { return fbo_.id(); }
+    // After render(): the same frame seen from the side camera, into `out` (its own size).
+    void renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out);
+
+    std::vector<std::uint8_t> readRgba8() const { return target_.readRgba8(); }
+    GLuint colorTexture() const { return target_.colorTexture(); }
+    GLuint framebuffer() const { return target_.framebuffer(); }
     GLuint shadowMapTexture() const { return shadowMaps_.texture(); }
-    GLuint depthTexture() const { return depth_.id(); }  // main pass depth, D32F
+    GLuint depthTexture() const { return target_.depthTexture(); }  // main pass depth, D32F
     const csm::CascadePlan& plan() const { return plan_; }  // of the last render()
     const SceneGpu& sceneGpu() const { return scene_; }
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
+    int width() const { return target_.width(); }
+    int height() const { return target_.height(); }
 
 private:
-    void ensureTarget(int width, int height);
     void shadowPass(const Settings& s, FrameStats& stats);
-    void mainPass(const Settings& s);
+    // Draws the shaded scene seen through viewProj into `target`; shadows always follow the
+    // main camera's cascades.
+    void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target);
+    void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
     void setShadowUniforms(const Settings& s) const;
 
     SceneGpu scene_;
@@ -47,11 +56,8 @@ private:
     gpu::Program mainProgram_;
     ShadowMaps shadowMaps_;
     GpuTimers timers_;
-    gpu::Texture color_;
-    gpu::Texture depth_;
-    gpu::Framebuffer fbo_;
-    int width_ = 0;
-    int height_ = 0;
+    LinePass lines_;
+    OffscreenTarget target_;
     csm::CascadePlan plan_;
 };
 

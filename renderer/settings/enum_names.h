@@ -37,7 +37,7 @@ struct EnumNames<FilterKind> {
 };
 template <>
 struct EnumNames<View> {
-    static constexpr std::array<std::string_view, 4> names{"shaded", "cascades", "shadow", "texel-density"};
+    static constexpr std::array<std::string_view, 5> names{"shaded", "cascades", "shadow", "texel-density", "side"};
 };
 
 template <class E>

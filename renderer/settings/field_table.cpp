@@ -160,7 +160,7 @@ std::vector<FieldInfo> outputRows() {
          .unit = "px", .kind = K::Int, .min = 16, .max = 8192, .step = 1, .change = C::Output,
          ST_FIELD_ACCESS(output.height)},
         {.path = "output.view", .label = "View",
-         .help = "Shaded scene, cascade colours, raw shadow term, or screen pixels per shadow texel (heat map).",
+         .help = "Shaded scene, cascade colours, shadow term, pixels per shadow texel, or a side view of the light boxes.",
          .kind = K::Enum, .enumNames = enumNames<View>(), ST_FIELD_ACCESS(output.view)},
     };
 }

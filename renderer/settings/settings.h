@@ -22,7 +22,9 @@ enum class Selection { Interval, Map };  // seed 004: view depth vs first map th
 enum class FilterKind { Hard, Pcf2x2, PcfNxN };
 // TexelDensity: screen pixels per shadow texel as a heat map (blue < 1/4 wasted, green 1 ideal,
 // red > 1 perspective aliasing; DESIGN.md "Aliasing / texel density").
-enum class View { Shaded, Cascades, Shadow, TexelDensity };
+// Side: the frame from an outside orbit camera with the main frustum, its split planes and each
+// cascade's light box as wireframes.
+enum class View { Shaded, Cascades, Shadow, TexelDensity, Side };
 
 struct CameraSettings {
     glm::vec3 position{0.0f, 1.7f, 10.0f};  // ws, metres

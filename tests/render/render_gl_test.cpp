@@ -151,3 +151,21 @@ TEST_F(RenderGLTest, CullingSkipsCastersOutsideEachLightBox) {
     }
     EXPECT_LT(stats.cascades[0].texelWorldSize, stats.cascades[3].texelWorldSize);
 }
+
+TEST_F(RenderGLTest, SideViewDrawsEveryCascadeLightBoxInItsTint) {
+    Settings s = loadPreset(ST_PRESET_DIR "/default.json");
+    s.output = {320, 240, View::Side};
+    Scene scene = loadScene(s.scene, ST_PRESET_DIR);
+    Renderer r(scene);
+    Rgba8Image img = test::renderImage(r, s);
+    for (int c = 0; c < s.cascades.count; ++c) {
+        // Visible wireframe pixels are the tint itself, sRGB-encoded.
+        glm::vec3 want = glm::pow(cascadeTint(c), glm::vec3(1.0f / 2.2f)) * 255.0f;
+        int hits = 0;
+        for (std::size_t i = 0; i < img.pixels.size() / 4; ++i) {
+            glm::vec3 px(img.pixels[i * 4], img.pixels[i * 4 + 1], img.pixels[i * 4 + 2]);
+            hits += glm::length(px - want) < 6.0f;
+        }
+        EXPECT_GT(hits, 20) << "light box of cascade " << c << " not drawn";
+    }
+}

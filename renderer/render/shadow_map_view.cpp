@@ -1,0 +1,54 @@
+#include "renderer/render/shadow_map_view.h"
+
+#include "renderer/render/shader_library.h"
+
+#include <algorithm>
+
+namespace st {
+
+ShadowMapView::ShadowMapView() {
+    program_ = gpu::linkProgram(shaderSource("fullscreen.vert"), shaderSource("depth_view.frag"), "depth_view");
+    emptyVao_ = gpu::createVertexArray();
+    fbo_ = gpu::createFramebuffer();
+    raw_ = gpu::createSampler();
+    glSamplerParameteri(raw_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(raw_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(raw_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+}
+
+void ShadowMapView::update(const ShadowMaps& maps, const csm::CascadePlan& plan, const csm::Aabb& wsSceneBounds,
+                           int tileSize) {
+    gpu::DebugGroup group("shadow map view");
+    if (tileSize != tileSize_) tiles_.clear();
+    tileSize_ = tileSize;
+    while (int(tiles_.size()) > maps.layers()) tiles_.pop_back();
+    while (int(tiles_.size()) < maps.layers()) {
+        tiles_.push_back(gpu::createTexture(GL_TEXTURE_2D));
+        glTextureStorage2D(tiles_.back().id(), 1, GL_RGBA8, tileSize, tileSize);
+    }
+    GLuint p = program_.id();
+    glUseProgram(p);
+    glBindVertexArray(emptyVao_.id());
+    glBindTextureUnit(0, maps.texture());
+    glBindSampler(0, raw_.id());
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, tileSize, tileSize);
+    for (int i = 0; i < maps.layers(); ++i) {
+        // Where the scene lies inside this light box, as stored depth (0 = the sun's side).
+        const csm::CascadeFit& f = plan.cascades[i];
+        csm::Aabb ls = csm::transformAabb(f.lsView, wsSceneBounds);
+        float range = std::max(f.lsBox.extent().z, 1e-6f);
+        float lo = std::clamp((f.lsBox.max.z - ls.max.z) / range, 0.0f, 1.0f);
+        float hi = std::clamp((f.lsBox.max.z - ls.min.z) / range, 0.0f, 1.0f);
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tiles_[i].id(), 0);
+        glProgramUniform1i(p, glGetUniformLocation(p, "uLayer"), i);
+        glProgramUniform1f(p, glGetUniformLocation(p, "uLo"), lo);
+        glProgramUniform1f(p, glGetUniformLocation(p, "uHi"), hi);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glBindSampler(0, 0);
+    glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace st

@@ -1,0 +1,29 @@
+#pragma once
+// Each cascade's depth layer rendered into a small RGBA8 texture with the depth range the scene
+// occupies stretched to a visible grey ramp, for the editor's shadow-map viewer.
+#include "renderer/csm/cascade_plan.h"
+#include "renderer/gpu/gl.h"
+#include "renderer/render/shadow_maps.h"
+
+#include <vector>
+
+namespace st {
+
+class ShadowMapView {
+public:
+    ShadowMapView();
+    // Re-renders every layer's tile (tileSize² texels each).
+    void update(const ShadowMaps& maps, const csm::CascadePlan& plan, const csm::Aabb& wsSceneBounds, int tileSize);
+    GLuint layerTexture(int layer) const { return tiles_[layer].id(); }
+    int layers() const { return static_cast<int>(tiles_.size()); }
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray emptyVao_;
+    gpu::Framebuffer fbo_;
+    gpu::Sampler raw_;  // no depth compare: read the stored depth itself
+    std::vector<gpu::Texture> tiles_;
+    int tileSize_ = 0;
+};
+
+}  // namespace st
