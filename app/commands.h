@@ -5,5 +5,6 @@
 namespace st::app {
 
 void addRenderCommand(CLI::App& cli, int& exitCode);
+void addEditorCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

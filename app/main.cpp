@@ -6,6 +6,7 @@ int main(int argc, char** argv) {
     cli.require_subcommand(1);
     int exitCode = 0;
     st::app::addRenderCommand(cli, exitCode);
+    st::app::addEditorCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

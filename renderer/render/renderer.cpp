@@ -127,6 +127,11 @@ void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, Offsc
     sidePass(s, orbit, out);
 }
 
+void Renderer::renderMainView(const Settings& s, OffscreenTarget& out) {
+    timers_.beginFrame(s.cascades.count + 1);
+    mainPass(s, plan_.csProj * plan_.vsView, out);
+}
+
 void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target) {
     csm::CameraParams cam = sideCamera(plan_, orbit, float(target.width()) / float(target.height()));
     glm::mat4 viewProj = csm::projectionMatrix(cam) * csm::viewMatrix(cam);

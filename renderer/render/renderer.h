@@ -31,6 +31,8 @@ public:
 
     // After render(): the same frame seen from the side camera, into `out` (its own size).
     void renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out);
+    // After render(): the main camera's image into `out` (give it the same aspect ratio).
+    void renderMainView(const Settings& s, OffscreenTarget& out);
 
     std::vector<std::uint8_t> readRgba8() const { return target_.readRgba8(); }
     GLuint colorTexture() const { return target_.colorTexture(); }

@@ -1,0 +1,18 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+
+namespace st::app {
+
+struct EditorOptions {
+    std::optional<std::filesystem::path> preset;  // default: presets/default.json if present
+    std::filesystem::path presetDir = "presets";
+    int frames = 0;                                // > 0: quit after N frames (smoke tests)
+    std::optional<std::filesystem::path> screenshot;  // written after the last frame
+    bool debugContext = false;
+};
+
+// Runs the editor until the window closes; returns the exit code.
+int runEditor(const EditorOptions& opt);
+
+}  // namespace st::app

@@ -1,0 +1,23 @@
+// `shadowtune editor`: the interactive tuning window.
+#include "app/commands.h"
+#include "app/editor_app.h"
+
+#include <memory>
+
+namespace st::app {
+
+void addEditorCommand(CLI::App& cli, int& exitCode) {
+    auto opt = std::make_shared<EditorOptions>();
+    auto preset = std::make_shared<std::string>();
+    CLI::App* editor = cli.add_subcommand("editor", "Open the interactive editor (needs a display)");
+    editor->add_option("preset", *preset, "Preset to open (default: presets/default.json)");
+    editor->add_option("--frames", opt->frames, "Quit after N frames (for scripted runs)")->check(CLI::Range(1, 1000000));
+    editor->add_option("--screenshot", opt->screenshot, "Write the window to this PNG after the last frame");
+    editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");
+    editor->callback([opt, preset, &exitCode] {
+        if (!preset->empty()) opt->preset = *preset;
+        exitCode = runEditor(*opt);
+    });
+}
+
+}  // namespace st::app

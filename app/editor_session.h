@@ -1,0 +1,57 @@
+#pragma once
+// One editing session: the Settings being tuned, the loaded scene and its renderer, the views
+// (main camera, side camera picture-in-picture, shadow-map tiles) and the panels.
+#include "app/editor_app.h"
+#include "app/editor_window.h"
+#include "app/fly_camera.h"
+#include "renderer/render/offscreen_target.h"
+#include "renderer/render/renderer.h"
+#include "renderer/render/shadow_map_view.h"
+#include "renderer/scene/scene.h"
+#include "renderer/settings/settings.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace st::app {
+
+class EditorSession {
+public:
+    EditorSession(EditorWindow& window, const EditorOptions& opt);
+    ~EditorSession();
+    // One frame: input, render, panels, present. Writes a screenshot of the whole window first
+    // if `screenshot` is set.
+    void frame(const std::filesystem::path* screenshot);
+    bool quitRequested() const { return quit_; }
+    int exitCode() const { return exitCode_; }
+
+private:
+    void loadScene(const std::string& spec);
+    void handleInput();
+    void renderViews(int width, int height);
+    void present(int width, int height);
+    void drawPanels();
+    void writeScreenshot(const std::filesystem::path& file, int width, int height);
+
+    EditorWindow& window_;
+    EditorOptions opt_;
+    std::filesystem::path presetPath_;
+    Settings settings_;
+    std::string loadedScene_;
+    std::unique_ptr<Scene> scene_;
+    std::unique_ptr<Renderer> renderer_;
+    OffscreenTarget pip_;
+    std::unique_ptr<ShadowMapView> shadowTiles_;
+    FrameStats stats_;
+    FlyState fly_;
+    OrbitCamera orbit_;
+    bool swapped_ = false;   // side view full window, main camera in the corner
+    bool quit_ = false;
+    int exitCode_ = 0;
+    std::string status_;
+    double lastTime_ = 0.0;
+    double cpuFrameMs_ = 0.0;
+};
+
+}  // namespace st::app

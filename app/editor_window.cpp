@@ -1,0 +1,114 @@
+#include "app/editor_window.h"
+
+#include "renderer/gpu/debug_output.h"
+#include "renderer/image/image_io.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+namespace st::app {
+namespace fs = std::filesystem;
+namespace {
+fs::path configDirectory() {
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return fs::path(xdg) / "shadowtune";
+    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".config" / "shadowtune";
+    return fs::current_path() / ".shadowtune";
+}
+
+void loadWindowSize(const fs::path& dir, int& w, int& h) {
+    std::ifstream in(dir / "window.json");
+    nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_object() && j.value("width", 0) >= 320 && j.value("height", 0) >= 240) {
+        w = std::min(j.value("width", w), 8192);
+        h = std::min(j.value("height", h), 8192);
+    }
+}
+
+void saveWindowSize(const fs::path& dir, GLFWwindow* window) {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window, &w, &h);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    try {
+        writeTextAtomic(dir / "window.json", nlohmann::json{{"width", w}, {"height", h}}.dump() + "\n");
+    } catch (const std::exception&) {
+        // Not being able to remember the size is no reason to fail at exit.
+    }
+}
+}  // namespace
+
+EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_(title) {
+    if (!glfwInit()) throw std::runtime_error("cannot open a window: GLFW could not initialise (is DISPLAY set?)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
+    configDir_ = configDirectory();
+    int w = 1280, h = 720;
+    loadWindowSize(configDir_, w, h);
+    window_ = glfwCreateWindow(w, h, title.c_str(), nullptr, nullptr);
+    if (!window_) {
+        glfwTerminate();
+        throw std::runtime_error("cannot open a window with an OpenGL 4.5 core context");
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(1);
+    if (debugContext) gpu::enableDebugOutput();
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    std::error_code ec;
+    fs::create_directories(configDir_, ec);
+    iniPath_ = (configDir_ / "imgui.ini").string();
+    ImGui::GetIO().IniFilename = iniPath_.c_str();
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    ImGui_ImplOpenGL3_Init("#version 450");
+}
+
+EditorWindow::~EditorWindow() {
+    saveWindowSize(configDir_, window_);
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
+
+void EditorWindow::beginFrame() {
+    glfwPollEvents();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+void EditorWindow::endFrame() {
+    ImGui::Render();
+    int w = 0, h = 0;
+    framebufferSize(w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, w, h);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void EditorWindow::swapBuffers() { glfwSwapBuffers(window_); }
+
+void EditorWindow::setTitle(const std::string& title) {
+    if (title == title_) return;
+    title_ = title;
+    glfwSetWindowTitle(window_, title.c_str());
+}
+
+void EditorWindow::framebufferSize(int& w, int& h) const { glfwGetFramebufferSize(window_, &w, &h); }
+
+}  // namespace st::app

@@ -1,0 +1,37 @@
+#pragma once
+// The editor's GLFW window with a GL 4.5 core context and Dear ImGui's GLFW + OpenGL3 backends.
+// Decision: the ImGui OpenGL3 backend keeps its own loader (Debian's libimgui.a is built with
+// it); the rest of shadowtune uses libepoxy. Both resolve the same driver entry points.
+// Window size and the ImGui layout (imgui.ini) persist in $XDG_CONFIG_HOME/shadowtune
+// (default ~/.config/shadowtune).
+#include <filesystem>
+#include <string>
+
+struct GLFWwindow;
+
+namespace st::app {
+
+class EditorWindow {
+public:
+    // Throws std::runtime_error when there is no display or no GL 4.5 core context.
+    EditorWindow(const std::string& title, bool debugContext);
+    ~EditorWindow();
+    EditorWindow(const EditorWindow&) = delete;
+    EditorWindow& operator=(const EditorWindow&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    bool shouldClose() const;
+    void beginFrame();  // poll events, start an ImGui frame
+    void endFrame();    // render ImGui over the back buffer
+    void swapBuffers();
+    void setTitle(const std::string& title);
+    void framebufferSize(int& w, int& h) const;
+
+private:
+    GLFWwindow* window_ = nullptr;
+    std::filesystem::path configDir_;
+    std::string iniPath_;  // must outlive the ImGui context (io.IniFilename points into it)
+    std::string title_;
+};
+
+}  // namespace st::app

@@ -1,0 +1,38 @@
+// The real editor window under Xvfb: it must start, draw panels and the scene, and exit 0.
+#include "renderer/image/image_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+int countNear(const st::Rgba8Image& img, int r, int g, int b, int tol) {
+    int n = 0;
+    for (std::size_t i = 0; i < img.pixels.size() / 4; ++i)
+        n += std::abs(img.pixels[i * 4] - r) <= tol && std::abs(img.pixels[i * 4 + 1] - g) <= tol &&
+             std::abs(img.pixels[i * 4 + 2] - b) <= tol;
+    return n;
+}
+}  // namespace
+
+TEST(EditorSmokeTest, WindowUnderXvfbShowsPanelsAndScene) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run missing (scripts/setup.sh installs xvfb)";
+    fs::path dir = fs::temp_directory_path() / ("st-editor-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path shot = dir / "editor.png";
+    std::string cmd = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" ST_SHADOWTUNE
+                      "' editor '" ST_PRESET_DIR "/default.json' --frames 4 --debug-gl --screenshot '" +
+                      shot.string() + "' > '" + (dir / "log.txt").string() + "' 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << "editor failed, see " << (dir / "log.txt");
+    st::Rgba8Image img = st::readImage(shot);
+    EXPECT_EQ(img.width, 1280);
+    EXPECT_EQ(img.height, 720);  // the size the editor opens with the first time
+    EXPECT_GT(countNear(img, 158, 184, 217, 6), 20000) << "no sky: scene not drawn";   // clear colour, sRGB
+    EXPECT_GT(countNear(img, 21, 22, 23, 4) + countNear(img, 15, 15, 15, 4), 2000) << "no ImGui panel";
+    EXPECT_TRUE(fs::exists(dir / "imgui.ini") || fs::exists(dir / "shadowtune" / "imgui.ini"));
+    fs::remove_all(dir);
+}
