@@ -18,6 +18,9 @@ int runEditor(const EditorOptions& opt) {
             session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr);
             if (last || session.quitRequested()) break;
         }
+        if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
+        if (opt.saveAs) session.saveAs(*opt.saveAs);
+        session.printFrameTimes();
         if (opt.debugContext && gpu::seriousDebugMessageCount() > 0) {
             std::fprintf(stderr, "error: GL debug output reported %d errors (see above)\n", gpu::seriousDebugMessageCount());
             return 3;

@@ -9,6 +9,8 @@ struct EditorOptions {
     std::filesystem::path presetDir = "presets";
     int frames = 0;                                // > 0: quit after N frames (smoke tests)
     std::optional<std::filesystem::path> screenshot;  // written after the last frame
+    std::optional<std::filesystem::path> sceneShot;   // the scene view alone, after the last frame
+    std::optional<std::filesystem::path> saveAs;      // "Save As" after the last frame (scripted runs)
     bool debugContext = false;
 };
 

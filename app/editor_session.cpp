@@ -122,6 +122,28 @@ void EditorSession::frame(const fs::path* screenshot) {
     if (screenshot) writeScreenshot(*screenshot, width, height);
     window_.swapBuffers();
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    frameMs_.push_back(cpuFrameMs_);
+}
+
+void EditorSession::writeSceneShot(const fs::path& file) const {
+    writeImageAtomic(file, {renderer_->width(), renderer_->height(), renderer_->readRgba8()});
+    std::printf("wrote %s (%dx%d)\n", file.string().c_str(), renderer_->width(), renderer_->height());
+}
+
+void EditorSession::saveAs(const fs::path& file) {
+    settings_.output.width = renderer_->width();
+    settings_.output.height = renderer_->height();
+    savePresetAtomic(settings_, file);
+    presetPath_ = file;
+    std::printf("saved %s\n", file.string().c_str());
+}
+
+void EditorSession::printFrameTimes() const {
+    if (frameMs_.size() < 3) return;
+    std::vector<double> t(frameMs_.begin() + 1, frameMs_.end());  // the first frame compiles shaders
+    std::sort(t.begin(), t.end());
+    double median = t[t.size() / 2];
+    std::printf("%zu frames, median frame %.1f ms (%.1f fps)\n", t.size(), median, 1000.0 / median);
 }
 
 void EditorSession::writeScreenshot(const fs::path& file, int width, int height) {

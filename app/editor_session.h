@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace st::app {
 
@@ -24,6 +25,9 @@ public:
     // if `screenshot` is set.
     void frame(const std::filesystem::path* screenshot);
     bool quitRequested() const { return quit_; }
+    void writeSceneShot(const std::filesystem::path& file) const;  // the main view, no panels
+    void saveAs(const std::filesystem::path& file);  // output size = the scene view's size
+    void printFrameTimes() const;                    // median CPU frame time and frame rate
     int exitCode() const { return exitCode_; }
 
 private:
@@ -52,6 +56,7 @@ private:
     std::string status_;
     double lastTime_ = 0.0;
     double cpuFrameMs_ = 0.0;
+    std::vector<double> frameMs_;  // wall time of every frame, for printFrameTimes
 };
 
 }  // namespace st::app

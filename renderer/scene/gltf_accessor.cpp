@@ -153,16 +153,17 @@ std::vector<glm::vec3> readVec3(const AccessorView& view) { return readVectors<3
 std::vector<glm::vec2> readVec2(const AccessorView& view) { return readVectors<2>(view); }
 
 std::vector<std::uint32_t> readIndices(LoadContext& ctx, const AccessorView& view, const std::string& role) {
+    const int type = view.componentType;
+    if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+        ctx.fail(role + " indices must be unsigned byte, short or int, not componentType " + std::to_string(type));
+    }
     std::vector<std::uint32_t> out(view.count);
     for (std::size_t i = 0; i < view.count; ++i) {
         const std::uint8_t* p = view.data + i * view.stride;
-        switch (view.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = *p; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: out[i] = load<std::uint16_t>(p); break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: out[i] = load<std::uint32_t>(p); break;
-        default: ctx.fail(role + " indices must be unsigned byte, short or int, not componentType " +
-                          std::to_string(view.componentType));
-        }
+        if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) out[i] = *p;
+        else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) out[i] = load<std::uint16_t>(p);
+        else out[i] = load<std::uint32_t>(p);
     }
     return out;
 }

@@ -31,7 +31,7 @@ struct LoadContext {
     std::uint64_t fileBytesRead = 0;      // against limits.maxTotalFileBytes
     std::uint64_t decodedBytes = 0;       // against limits.maxDecodedBytes
     std::string fsRefusal;                // first path refused inside a tinygltf callback
-    int defaultMaterial = -1;             // Scene::materials index for primitives without one
+    bool usesDefaultMaterial = false;     // some primitive has no material (see convertMaterials)
     std::map<int, std::string> unreadableImages;  // image index -> why it cannot be used
 
     [[noreturn]] void fail(const std::string& what) const;  // throws SceneError "<file>: what"
@@ -105,7 +105,8 @@ bool keepEncodedImage(tinygltf::Image* image, int index, std::string* err, std::
                       void* ctx);
 // RGBA8, or nullopt with a warning (unreadable, undecodable or above the limits).
 std::optional<Image> decodeImage(LoadContext& ctx, const tinygltf::Image& image, int index);
-// One Material per glTF material, textures decoded into scene.images.
+// One Material per glTF material, textures decoded into scene.images, then the default Material
+// when ctx.usesDefaultMaterial. Runs after the geometry, so textures get what the budget leaves.
 void convertMaterials(LoadContext& ctx, const tinygltf::Model& model, Scene& scene);
 
 // ---- geometry (gltf_mesh.cpp, gltf_nodes.cpp)
@@ -120,7 +121,7 @@ struct GeometryStats {
     std::size_t primitivesSkipped = 0;
     std::size_t meshInstances = 0;
 };
-// Appends one primitive instance as one DrawItem. ctx.defaultMaterial is created on first use.
+// Appends one primitive instance as one DrawItem (material indices as convertMaterials makes them).
 void appendPrimitive(LoadContext& ctx, const tinygltf::Model& model, int mesh, int primitive,
                      const MeshInstance& instance, Scene& scene, GeometryStats& stats);
 // Walks the chosen scene's node trees and appends every mesh instance.

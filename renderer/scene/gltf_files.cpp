@@ -71,7 +71,7 @@ std::optional<std::string> schemeRefusal(const std::string& decoded) {
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (scheme.size() == 1) return std::string("is an absolute path (drive letter)");
     if (scheme == "file") return std::string("is an absolute file: URI");
-    return "uses the scheme '" + scheme + ":'; only relative paths and data: URIs are read";
+    return "uses the scheme '" + scheme + ":'";
 }
 
 std::uint32_t readU32(const std::vector<std::uint8_t>& bytes, std::size_t offset) {

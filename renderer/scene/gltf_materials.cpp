@@ -92,6 +92,7 @@ void convertMaterials(LoadContext& ctx, const tinygltf::Model& model, Scene& sce
         if (!m.name.empty()) label += " ('" + m.name.substr(0, 60) + "')";
         scene.materials.push_back(convertMaterial(ctx, m, label, textures));
     }
+    if (ctx.usesDefaultMaterial) scene.materials.push_back(Material{});
 }
 
 }  // namespace st::gltf

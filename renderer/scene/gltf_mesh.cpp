@@ -149,9 +149,9 @@ void emitFlat(LoadContext& ctx, const PrimitiveData& data, const MeshInstance& i
         glm::vec3 n = glm::cross(v[1].position - v[0].position, v[2].position - v[0].position);
         const float length = glm::length(n);
         n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
-        for (Vertex& corner_vertex : v) {
-            corner_vertex.normal = n;
-            scene.vertices.push_back(corner_vertex);
+        for (Vertex& out : v) {
+            out.normal = n;
+            scene.vertices.push_back(out);
         }
     }
     for (std::uint32_t i = 0; i < data.indices.size(); ++i) scene.indices.push_back(base + i);
@@ -173,17 +173,16 @@ void emitShared(LoadContext& ctx, const PrimitiveData& data, const std::vector<g
     }
 }
 
-int materialIndex(LoadContext& ctx, const tinygltf::Model& model, int material, Scene& scene, const std::string& label) {
-    if (material >= static_cast<int>(model.materials.size())) {
+// Primitives without a material use one default Material appended after the file's materials.
+int materialIndex(LoadContext& ctx, const tinygltf::Model& model, int material, const std::string& label) {
+    const int count = static_cast<int>(model.materials.size());
+    if (material >= count) {
         ctx.fail(label + " refers to material " + std::to_string(material) + ", but the file has " +
-                 std::to_string(model.materials.size()) + " materials");
+                 std::to_string(count) + " materials");
     }
     if (material >= 0) return material;
-    if (ctx.defaultMaterial < 0) {
-        ctx.defaultMaterial = static_cast<int>(scene.materials.size());
-        scene.materials.push_back(Material{});
-    }
-    return ctx.defaultMaterial;
+    ctx.usesDefaultMaterial = true;
+    return count;
 }
 
 csm::Aabb boundsOf(const Scene& scene, std::size_t firstVertex) {
@@ -208,7 +207,7 @@ void appendPrimitive(LoadContext& ctx, const tinygltf::Model& model, int mesh, i
         return;
     }
     DrawItem draw;
-    draw.material = materialIndex(ctx, model, p.material, scene, label);
+    draw.material = materialIndex(ctx, model, p.material, label);
     const std::vector<glm::vec3> normals = worldNormals(ctx, *data, instance, label);
     const std::size_t vertexCount = normals.empty() ? data->indices.size() : data->positions.size();
     checkBudget(ctx, scene, vertexCount, data->indices.size(), label + " of " + instance.nodeLabel);

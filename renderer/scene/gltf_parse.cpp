@@ -101,6 +101,7 @@ bool runTinygltf(LoadContext& ctx, tinygltf::TinyGLTF& loader, std::vector<std::
 
 tinygltf::Model parseModel(LoadContext& ctx) {
     std::vector<std::uint8_t> bytes = readFileChecked(ctx, ctx.file, "scene file");
+    if (bytes.empty()) ctx.fail("is empty");
     if (bytes.size() > 0xFFFFFFF0u) ctx.fail("is too large for tinygltf (4 GiB)");
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&fsFileExists, &fsExpandFilePath, &fsReadWholeFile, &fsWriteWholeFile, &ctx});

@@ -159,6 +159,15 @@ void checkBufferViews(const LoadContext& ctx, const Json& doc, const std::vector
     }
 }
 
+void checkAsset(const LoadContext& ctx, const Json& doc) {
+    const auto asset = doc.find("asset");
+    if (asset == doc.end() || !asset->is_object()) ctx.fail("is not glTF: it has no 'asset' object");
+    const auto version = asset->find("version");
+    if (version == asset->end() || !version->is_string()) ctx.fail("is not glTF: 'asset' has no 'version' string");
+    const std::string v = version->get<std::string>();
+    if (v.rfind("2.", 0) != 0) ctx.fail("is glTF version '" + v.substr(0, 20) + "'; only 2.x is read");
+}
+
 // Returns whether the JSON was edited (a data: image tinygltf would fail on was stubbed).
 bool checkImages(LoadContext& ctx, Json& doc) {
     if (arrayMember(ctx, doc, "images") == nullptr) return false;
@@ -168,6 +177,7 @@ bool checkImages(LoadContext& ctx, Json& doc) {
         const std::string what = "image " + std::to_string(index);
         const std::string uri = uriMember(ctx, image, what);
         if (uri.empty()) {
+            // in a buffer view: checked with the buffer views
         } else if (!isDataUri(uri)) {
             if (auto why = uriRefusal(ctx, uri)) {
                 ctx.fail(what + " URI " + shortUri(uri) + " " + *why + "; only files inside " +
@@ -202,6 +212,7 @@ std::optional<std::string> prevalidateJson(LoadContext& ctx, std::string_view te
         ctx.fail(std::string("is not valid JSON: ") + e.what());
     }
     if (!doc.is_object()) ctx.fail("is not glTF: the JSON top level is not an object");
+    checkAsset(ctx, doc);
     checkBufferViews(ctx, doc, checkBuffers(ctx, doc, glb));
     if (!checkImages(ctx, doc)) return std::nullopt;
     return doc.dump();

@@ -48,7 +48,8 @@ csm::Aabb sceneBounds(const Scene& scene) {
 
 void failWithoutTriangles(const gltf::LoadContext& ctx, const gltf::GeometryStats& stats) {
     std::string why = "no node of the scene instantiates a mesh";
-    if (stats.meshInstances > 0) {
+    if (stats.meshInstances > 0 && stats.primitivesSkipped == 0) why = "its meshes have no primitives";
+    if (stats.primitivesSkipped > 0) {
         why = std::to_string(stats.primitivesSkipped) + " primitive instance(s) skipped";
         if (!ctx.warnings.empty()) why += "; first: " + ctx.warnings.front();
     }
@@ -64,10 +65,10 @@ GltfLoadResult loadGltf(const fs::path& file, const GltfLimits& limits) {
     GltfLoadResult result;
     Scene& scene = result.scene;
     scene.name = file.stem().string();
-    gltf::convertMaterials(ctx, model, scene);
     gltf::GeometryStats stats;
     gltf::appendSceneNodes(ctx, model, scene, stats);
     if (scene.draws.empty()) failWithoutTriangles(ctx, stats);
+    gltf::convertMaterials(ctx, model, scene);
     scene.wsBounds = sceneBounds(scene);
     result.warnings = std::move(ctx.warnings);
     return result;

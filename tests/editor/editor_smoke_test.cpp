@@ -1,5 +1,6 @@
 // The real editor window under Xvfb: it must start, draw panels and the scene, and exit 0.
 #include "renderer/image/image_io.h"
+#include "tests/support/image_compare.h"
 
 #include <gtest/gtest.h>
 
@@ -34,5 +35,24 @@ TEST(EditorSmokeTest, WindowUnderXvfbShowsPanelsAndScene) {
     EXPECT_GT(countNear(img, 158, 184, 217, 6), 20000) << "no sky: scene not drawn";   // clear colour, sRGB
     EXPECT_GT(countNear(img, 21, 22, 23, 4) + countNear(img, 15, 15, 15, 4), 2000) << "no ImGui panel";
     EXPECT_TRUE(fs::exists(dir / "imgui.ini") || fs::exists(dir / "shadowtune" / "imgui.ini"));
+    fs::remove_all(dir);
+}
+
+TEST(EditorSmokeTest, PresetSavedFromEditorReplaysHeadlessToTheSameImage) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run missing (scripts/setup.sh installs xvfb)";
+    fs::path dir = fs::temp_directory_path() / ("st-replay-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::string log = " > '" + (dir / "log.txt").string() + "' 2>&1";
+    std::string editor = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" ST_SHADOWTUNE
+                         "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --frames 3 --scene-screenshot '" +
+                         (dir / "editor.png").string() + "' --save-as '" + (dir / "saved.json").string() + "'" + log;
+    ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << (dir / "log.txt");
+    std::string replay = "'" ST_SHADOWTUNE "' render '" + (dir / "saved.json").string() + "' --out '" +
+                         (dir / "replay").string() + "'" + log;
+    ASSERT_EQ(std::system(replay.c_str()), 0) << "replay failed, see " << (dir / "log.txt");
+    st::Rgba8Image fromEditor = st::readImage(dir / "editor.png");
+    st::Rgba8Image replayed = st::readImage(dir / "replay" / "saved.png");
+    st::test::CompareResult r = st::test::compareImages(replayed, fromEditor, {});  // renderdiff tolerance
+    EXPECT_TRUE(r.pass) << r.summary();
     fs::remove_all(dir);
 }

@@ -88,7 +88,7 @@ void GltfBuilder::setScene(const std::vector<int>& nodes) {
 
 fs::path GltfBuilder::writeDataUri(const fs::path& file) const {
     Json out = doc;
-    out["buffers"][0]["byteLength"] = bin.size();
+    if (!out["buffers"][0].contains("byteLength")) out["buffers"][0]["byteLength"] = bin.size();
     out["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
     writeText(file, out.dump());
     return file;
@@ -96,7 +96,7 @@ fs::path GltfBuilder::writeDataUri(const fs::path& file) const {
 
 fs::path GltfBuilder::writeExternal(const fs::path& file, const std::string& uri, const std::string& binName) const {
     Json out = doc;
-    out["buffers"][0]["byteLength"] = bin.size();
+    if (!out["buffers"][0].contains("byteLength")) out["buffers"][0]["byteLength"] = bin.size();
     out["buffers"][0]["uri"] = uri;
     writeText(file, out.dump());
     writeBytes(file.parent_path() / binName, bin);
@@ -114,7 +114,7 @@ void appendU32(std::vector<std::uint8_t>& out, std::uint32_t v) {
 
 fs::path GltfBuilder::writeGlb(const fs::path& file) const {
     Json out = doc;
-    out["buffers"][0]["byteLength"] = bin.size();
+    if (!out["buffers"][0].contains("byteLength")) out["buffers"][0]["byteLength"] = bin.size();
     std::string json = out.dump();
     json.resize((json.size() + 3) / 4 * 4, ' ');
     std::vector<std::uint8_t> chunkBin = bin;

@@ -56,6 +56,7 @@ public:
     void setScene(const std::vector<int>& nodes);
 
     // Writers. The buffer goes as a base64 data: URI, an external file, or the GLB BIN chunk.
+    // buffers[0].byteLength is bin.size() unless doc sets it.
     fs::path writeDataUri(const fs::path& file) const;
     fs::path writeExternal(const fs::path& file, const std::string& uri, const std::string& binName) const;
     fs::path writeGlb(const fs::path& file) const;
