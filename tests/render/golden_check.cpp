@@ -1,5 +1,7 @@
 // Replays one preset at a small size and compares it with its reviewed golden image.
-//   golden_check PRESET GOLDEN_DIR ARTIFACT_DIR
+//   golden_check PRESET GOLDEN_DIR ARTIFACT_DIR [--skip-without-assets]
+// --skip-without-assets: exit 77 (CTest "skipped") when the preset's scene file is absent, for
+// presets of the third-party scenes in ../shared/assets, which a user's clone may not have.
 // ST_UPDATE_GOLDENS=1 writes the golden instead (review the new images before committing).
 // On failure the actual image and a diff image are left in ARTIFACT_DIR.
 #include "renderer/context/egl_context.h"
@@ -66,12 +68,22 @@ int check(const fs::path& preset, const fs::path& goldenDir, const fs::path& art
 }
 }  // namespace
 
+bool sceneMissing(const fs::path& preset) {
+    Settings s = loadPreset(preset);
+    return s.scene.rfind("builtin:", 0) != 0 && !fs::exists(preset.parent_path() / s.scene);
+}
+
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: golden_check PRESET GOLDEN_DIR ARTIFACT_DIR\n");
+    bool skipWithoutAssets = argc == 5 && std::string(argv[4]) == "--skip-without-assets";
+    if (argc != 4 && !skipWithoutAssets) {
+        std::fprintf(stderr, "usage: golden_check PRESET GOLDEN_DIR ARTIFACT_DIR [--skip-without-assets]\n");
         return 2;
     }
     try {
+        if (skipWithoutAssets && sceneMissing(argv[1])) {
+            std::printf("SKIP %s: its scene is not there (../shared/assets beside the project?)\n", argv[1]);
+            return 77;
+        }
         return check(argv[1], argv[2], argv[3]);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "FAIL %s: %s\n", argv[1], e.what());
