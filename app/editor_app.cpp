@@ -13,7 +13,7 @@ int runEditor(const EditorOptions& opt) {
     try {
         EditorWindow window("shadowtune", opt.debugContext);
         EditorSession session(window, opt);
-        for (int frame = 0; !window.shouldClose(); ++frame) {
+        for (int frame = 0;; ++frame) {
             bool last = opt.frames > 0 && frame + 1 >= opt.frames;
             session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr);
             if (last || session.quitRequested()) break;

@@ -17,17 +17,32 @@ namespace fs = std::filesystem;
 
 EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : window_(window), opt_(opt) {
     presetPath_ = opt.preset ? *opt.preset : opt.presetDir / "default.json";
-    if (fs::exists(presetPath_) || opt.preset) settings_ = loadPreset(presetPath_);  // a bad file given by name fails
+    if (opt.preset || fs::exists(presetPath_)) settings_ = loadPreset(presetPath_);  // a bad file given by name fails
+    else presetPath_.clear();
+    valid_ = settings_;
     loadScene(settings_.scene);
     shadowTiles_ = std::make_unique<ShadowMapView>();
+    ui_ = std::make_unique<ui::EditorUi>(opt.presetDir);
+    ui_->setDocument(settings_, presetPath_);
+    scanPresets();
     lastTime_ = glfwGetTime();
+}
+
+void EditorSession::scanPresets() {
+    presetFiles_.clear();
+    std::error_code ec;
+    for (const fs::path& dir : {opt_.presetDir, opt_.presetDir / "scenes"})
+        for (const auto& e : fs::directory_iterator(dir, ec))
+            if (e.path().extension() == ".json" && e.path().filename() != "schema.json") presetFiles_.push_back(e.path());
+    std::sort(presetFiles_.begin(), presetFiles_.end());
 }
 
 EditorSession::~EditorSession() = default;
 
 void EditorSession::loadScene(const std::string& spec) {
     try {
-        auto scene = std::make_unique<Scene>(st::loadScene(spec, presetPath_.parent_path()));
+        fs::path base = presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path();
+        auto scene = std::make_unique<Scene>(st::loadScene(spec, base));
         renderer_.reset();  // the old renderer refers to the old scene
         scene_ = std::move(scene);
         renderer_ = std::make_unique<Renderer>(*scene_);
@@ -35,8 +50,8 @@ void EditorSession::loadScene(const std::string& spec) {
         status_.clear();
     } catch (const std::exception& e) {
         status_ = e.what();
-        if (!scene_) throw;            // nothing loaded yet: the session cannot start
-        settings_.scene = loadedScene_;  // keep the scene that works
+        if (!scene_) throw;  // nothing loaded yet: the session cannot start
+        valid_.scene = loadedScene_;  // keep rendering the scene that works; the panel shows why
     }
 }
 
@@ -55,10 +70,8 @@ void EditorSession::handleInput() {
     if (!io.WantCaptureKeyboard) {
         in.forward = key(GLFW_KEY_W), in.back = key(GLFW_KEY_S), in.left = key(GLFW_KEY_A);
         in.right = key(GLFW_KEY_D), in.down = key(GLFW_KEY_Q), in.up = key(GLFW_KEY_E);
-        in.frameScene = ImGui::IsKeyPressed(GLFW_KEY_F, false);
-        if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) swapped_ = !swapped_;
     }
-    if (swapped_ && !io.WantCaptureMouse) {  // the side camera orbits with the left mouse button
+    if (swapped_ && !io.WantCaptureMouse) {  // full-window side camera: left mouse orbits, wheel zooms
         if (io.MouseDown[0]) orbit_.yawDeg -= io.MouseDelta.x * 0.3f, orbit_.pitchDeg += io.MouseDelta.y * 0.3f;
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
         return;
@@ -66,8 +79,23 @@ void EditorSession::handleInput() {
     updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
 }
 
+void EditorSession::applyRequests(const ui::UiRequests& r) {
+    if (r.quit) quit_ = true;
+    if (r.frameScene) frameBounds(settings_.camera, scene_->wsBounds);
+    if (r.swapSideView) swapped_ = !swapped_;
+    if (r.presetsChanged) scanPresets();
+    if (r.presetLoaded) presetPath_ = ui_->presetFile();
+    orbit_.yawDeg -= r.sideViewOrbit.x * 0.3f;
+    orbit_.pitchDeg = std::clamp(orbit_.pitchDeg + r.sideViewOrbit.y * 0.3f, -89.0f, 89.0f);
+    orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, r.sideViewZoom), 0.05f, 20.0f);
+    pipWidth_ = int(r.sideViewSize.x);
+    pipHeight_ = int(r.sideViewSize.y);
+    if (r.settingsValid) valid_ = settings_;
+    window_.setTitle(ui_->windowTitle());
+}
+
 void EditorSession::renderViews(int width, int height) {
-    Settings s = settings_;
+    Settings s = valid_;
     s.output.width = width;
     s.output.height = height;
     if (swapped_) s.output.view = View::Side;
@@ -77,47 +105,54 @@ void EditorSession::renderViews(int width, int height) {
         status_ = e.what();
         return;
     }
-    pip_.ensure(std::max(width / 4, 16), std::max(height / 4, 16));
-    if (swapped_) renderer_->renderMainView(settings_, pip_);
-    else renderer_->renderSideView(settings_, orbit_, pip_);
+    {
+        // Until the panel reports the size it shows the picture at: a quarter of the window.
+        int w = pipWidth_ >= 16 ? pipWidth_ : std::max(16, width / 4);
+        int h = pipHeight_ >= 16 ? pipHeight_ : std::max(16, height / 4);
+        if (swapped_) h = std::max(16, w * height / width);  // the main view keeps the window's aspect
+        retiredPip_ = OffscreenTarget();
+        if (w != pip_.width() || h != pip_.height()) retiredPip_ = std::move(pip_);
+        pip_.ensure(w, h);
+        if (swapped_) renderer_->renderMainView(valid_, pip_);
+        else renderer_->renderSideView(valid_, orbit_, pip_);
+    }
     shadowTiles_->update(renderer_->shadowMaps(), renderer_->plan(), scene_->wsBounds, 256);
 }
 
 void EditorSession::present(int width, int height) {
     glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, width, height, 0, 0, width, height,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    int x0 = width - pip_.width() - 8, y0 = 8;  // bottom-right corner (GL origin is bottom-left)
-    glBlitNamedFramebuffer(pip_.framebuffer(), 0, 0, 0, pip_.width(), pip_.height(), x0, y0, x0 + pip_.width(),
-                           y0 + pip_.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
-void EditorSession::drawPanels() {
-    ImGui::Begin("Frame");
-    ImGui::Text("CPU frame %.1f ms", cpuFrameMs_);
-    ImGui::Text("GPU shadow %.2f ms, main %.2f ms", stats_.gpuShadowMs, stats_.gpuMainMs);
-    for (std::size_t i = 0; i < stats_.cascades.size(); ++i)
-        ImGui::Text("cascade %zu: %.1f-%.1f m, texel %.3f m, %d draws", i, stats_.cascades[i].vsNear,
-                    stats_.cascades[i].vsFar, stats_.cascades[i].texelWorldSize, stats_.cascades[i].casterDraws);
-    for (int i = 0; i < shadowTiles_->layers(); ++i) {
-        ImGui::Image(reinterpret_cast<ImTextureID>(std::uintptr_t(shadowTiles_->layerTexture(i))), ImVec2(96, 96));
-        if (i + 1 < shadowTiles_->layers()) ImGui::SameLine();
-    }
-    if (!status_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status_.c_str());
-    ImGui::End();
+ui::UiInputs EditorSession::uiInputs() const {
+    auto tex = [](GLuint id) { return reinterpret_cast<ImTextureID>(std::uintptr_t(id)); };
+    ui::UiInputs in;
+    in.stats = &stats_;
+    in.cpuFrameMs = cpuFrameMs_;
+    for (int i = 0; i < shadowTiles_->layers(); ++i) in.shadowLayers.push_back(tex(shadowTiles_->layerTexture(i)));
+    in.shadowMapSize = valid_.cascades.mapSize;
+    in.sideView = pip_.colorTexture() ? tex(pip_.colorTexture()) : tex(0);
+    in.presetFiles = presetFiles_;
+    in.statusLine = status_;
+    return in;
 }
 
 void EditorSession::frame(const fs::path* screenshot) {
     auto t0 = std::chrono::steady_clock::now();
     window_.beginFrame();
+    if (window_.shouldClose()) {  // the close button asks the panels first (unsaved changes)
+        window_.cancelClose();
+        ui_->requestQuit();
+    }
     handleInput();
-    if (settings_.scene != loadedScene_) loadScene(settings_.scene);
+    applyRequests(ui_->draw(settings_, uiInputs()));
+    if (valid_.scene != loadedScene_) loadScene(valid_.scene);
     int width = 0, height = 0;
     window_.framebufferSize(width, height);
     if (width >= 16 && height >= 16) {
         renderViews(width, height);
         present(width, height);
     }
-    drawPanels();
     window_.endFrame();
     if (screenshot) writeScreenshot(*screenshot, width, height);
     window_.swapBuffers();
@@ -131,9 +166,10 @@ void EditorSession::writeSceneShot(const fs::path& file) const {
 }
 
 void EditorSession::saveAs(const fs::path& file) {
-    settings_.output.width = renderer_->width();
-    settings_.output.height = renderer_->height();
-    savePresetAtomic(settings_, file);
+    Settings s = valid_;
+    s.output.width = renderer_->width();
+    s.output.height = renderer_->height();
+    savePresetAtomic(s, file);
     presetPath_ = file;
     std::printf("saved %s\n", file.string().c_str());
 }

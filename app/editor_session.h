@@ -9,6 +9,7 @@
 #include "renderer/render/shadow_map_view.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
+#include "ui/editor_ui.h"
 
 #include <filesystem>
 #include <memory>
@@ -33,20 +34,27 @@ public:
 private:
     void loadScene(const std::string& spec);
     void handleInput();
+    void applyRequests(const ui::UiRequests& r);
     void renderViews(int width, int height);
     void present(int width, int height);
-    void drawPanels();
+    ui::UiInputs uiInputs() const;
+    void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
 
     EditorWindow& window_;
     EditorOptions opt_;
     std::filesystem::path presetPath_;
-    Settings settings_;
+    Settings settings_;   // what the panels edit
+    Settings valid_;      // the last settings that passed validation: what is rendered
     std::string loadedScene_;
     std::unique_ptr<Scene> scene_;
     std::unique_ptr<Renderer> renderer_;
     OffscreenTarget pip_;
+    OffscreenTarget retiredPip_;  // the previous picture after a resize: this frame's panels may name it
     std::unique_ptr<ShadowMapView> shadowTiles_;
+    std::unique_ptr<ui::EditorUi> ui_;
+    std::vector<std::filesystem::path> presetFiles_;
+    int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
     FrameStats stats_;
     FlyState fly_;
     OrbitCamera orbit_;

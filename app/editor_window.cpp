@@ -85,6 +85,8 @@ EditorWindow::~EditorWindow() {
 
 bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 
+void EditorWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+
 void EditorWindow::beginFrame() {
     glfwPollEvents();
     ImGui_ImplOpenGL3_NewFrame();

@@ -21,6 +21,7 @@ public:
 
     GLFWwindow* handle() const { return window_; }
     bool shouldClose() const;
+    void cancelClose();  // the close button was handled: keep running until the panels agree
     void beginFrame();  // poll events, start an ImGui frame
     void endFrame();    // render ImGui over the back buffer
     void swapBuffers();

@@ -19,9 +19,15 @@ ShadowMapView::ShadowMapView() {
 void ShadowMapView::update(const ShadowMaps& maps, const csm::CascadePlan& plan, const csm::Aabb& wsSceneBounds,
                            int tileSize) {
     gpu::DebugGroup group("shadow map view");
-    if (tileSize != tileSize_) tiles_.clear();
+    retired_.clear();
+    auto retire = [this] {
+        retired_.push_back(std::move(tiles_.back()));
+        tiles_.pop_back();
+    };
+    if (tileSize != tileSize_)
+        while (!tiles_.empty()) retire();
     tileSize_ = tileSize;
-    while (int(tiles_.size()) > maps.layers()) tiles_.pop_back();
+    while (int(tiles_.size()) > maps.layers()) retire();
     while (int(tiles_.size()) < maps.layers()) {
         tiles_.push_back(gpu::createTexture(GL_TEXTURE_2D));
         glTextureStorage2D(tiles_.back().id(), 1, GL_RGBA8, tileSize, tileSize);

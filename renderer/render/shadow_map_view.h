@@ -23,6 +23,9 @@ private:
     gpu::Framebuffer fbo_;
     gpu::Sampler raw_;  // no depth compare: read the stored depth itself
     std::vector<gpu::Texture> tiles_;
+    // Tiles replaced by the last update(), kept one more update: a UI draw list recorded before
+    // this frame's update() may still name them.
+    std::vector<gpu::Texture> retired_;
     int tileSize_ = 0;
 };
 

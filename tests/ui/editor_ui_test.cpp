@@ -1,0 +1,253 @@
+// EditorUi behaviour with scripted mouse and keys under ImGui's null backend (no window, no GL):
+// the widgets come from the field table, edits are clamped, undo merges a drag, presets load and
+// save through the panel, problems are shown instead of thrown.
+#include "renderer/settings/settings_json.h"
+#include "tests/ui/ui_driver.h"
+#include "tests/ui/ui_test_data.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+using namespace st;
+using namespace st::test;
+
+namespace {
+
+class EditorUiTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        d.in.stats = &stats;
+        d.frames(2);  // windows appear, rectangles are recorded
+    }
+    // Drags the elevation slider from its middle (0 deg) to 90 % of its width.
+    float dragElevation() {
+        const auto r = d.rect("light.elevation");
+        d.drag(r.at(0.5f, 0.5f), r.at(0.9f, 0.5f));
+        return d.s.light.elevation;
+    }
+    static ImTextureID fakeTexture(int n) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(n)); }
+
+    FrameStats stats = fakeFrameStats();
+    ScratchFolder scratch;
+    UiDriver d;
+};
+
+}  // namespace
+
+TEST_F(EditorUiTest, EveryFieldOfTheOpenGroupsHasAWidget) {
+    for (const FieldInfo& field : fieldTable()) {
+        const std::string group(field.path.substr(0, field.path.find('.')));
+        const bool closedGroup = field.path.find('.') != std::string_view::npos &&
+                                 group != "camera" && group != "light" && group != "cascades" &&
+                                 group != "filter" && group != "bias";
+        if (closedGroup || field.path == "cascades.manualSplits") continue;
+        EXPECT_TRUE(d.drawn(field.path)) << field.path;
+    }
+    EXPECT_FALSE(d.drawn("output.width"));  // collapsed by default
+    d.scroll(d.rect("light.elevation").center(), -30.0f);  // the Output header is below the fold
+    d.click("group.output");
+    EXPECT_TRUE(d.drawn("output.width"));
+    EXPECT_TRUE(d.drawn("output.view"));
+}
+
+TEST_F(EditorUiTest, ManualSplitsAppearForTheManualSchemeWithCountMinusOneEntries) {
+    EXPECT_FALSE(d.drawn("cascades.manualSplits[0]"));
+    d.s.cascades.scheme = SplitScheme::Manual;
+    d.frame();
+    EXPECT_EQ(d.s.cascades.manualSplits, (std::vector<float>{6.2f, 24.5f, 92.0f}));  // seeded from the renderer
+    EXPECT_TRUE(d.drawn("cascades.manualSplits[2]"));
+    EXPECT_TRUE(d.last.settingsValid);
+    d.s.cascades.count = 2;
+    d.frame();
+    EXPECT_EQ(d.s.cascades.manualSplits.size(), 1u);
+    EXPECT_FALSE(d.drawn("cascades.manualSplits[1]"));
+}
+
+TEST_F(EditorUiTest, DraggingASliderEditsThroughTheTableAndReportsTheChange) {
+    const float before = d.s.light.elevation;
+    const auto r = d.rect("light.elevation");
+    d.mouse(r.at(0.5f, 0.5f), false);
+    d.frame();
+    d.mouse(r.at(0.5f, 0.5f), true);
+    d.frame();
+    d.mouse(r.at(0.8f, 0.5f), true);
+    d.frame();
+    EXPECT_GT(d.s.light.elevation, before);
+    EXPECT_EQ(d.last.change, ChangeClass::Uniform);
+    d.mouse(r.at(0.8f, 0.5f), false);
+    d.frame();
+    EXPECT_EQ(d.last.change, ChangeClass::None);
+    EXPECT_TRUE(d.ui().dirty());
+    EXPECT_EQ(d.ui().windowTitle(), "shadowtune - untitled *");
+}
+
+TEST_F(EditorUiTest, UndoRevertsAWholeDragAndRedoReappliesIt) {
+    const float before = d.s.light.elevation;
+    const float dragged = dragElevation();
+    ASSERT_GT(dragged, before + 10.0f);
+    d.pressKey(kKeyZ, true);
+    EXPECT_EQ(d.s.light.elevation, before) << "one Ctrl+Z undoes the whole drag, not one frame of it";
+    EXPECT_EQ(d.last.change, ChangeClass::None);  // the change was reported by the frame that undid it
+    EXPECT_FALSE(d.ui().dirty());
+    d.pressKey(kKeyZ, true, true);
+    EXPECT_EQ(d.s.light.elevation, dragged);
+    d.pressKey(kKeyZ, true);
+    d.pressKey(kKeyZ, true);  // nothing more to undo: no change, no crash
+    EXPECT_EQ(d.s.light.elevation, before);
+}
+
+TEST_F(EditorUiTest, TypedValuesAreClampedToTheTableRange) {
+    d.ctrlClick(d.rect("cascades.lambda").center());  // Ctrl+click turns a slider into a text field
+    d.typeText("5");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.cascades.lambda, 1.0f);
+    d.ctrlClick(d.rect("cascades.count").center());
+    d.typeText("12");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.cascades.count, 8);
+}
+
+TEST_F(EditorUiTest, SaveWritesTheEditedSettingsAndClearsTheDirtyMarker) {
+    d.ui().setDocument(d.s, scratch.path / "mine.json");
+    const float dragged = dragElevation();
+    EXPECT_EQ(d.ui().windowTitle(), "shadowtune - mine.json *");
+    d.click("presets.save");
+    ASSERT_TRUE(d.ui().errors().empty()) << d.ui().errors().front();
+    EXPECT_TRUE(d.last.presetsChanged);
+    EXPECT_EQ(loadPreset(scratch.path / "mine.json").light.elevation, dragged);
+    EXPECT_FALSE(d.ui().dirty());
+    EXPECT_EQ(d.ui().windowTitle(), "shadowtune - mine.json");
+}
+
+TEST_F(EditorUiTest, CtrlSSavesAndSaveAsWritesTheTypedPath) {
+    d.ui().setDocument(d.s, scratch.path / "a.json");
+    dragElevation();
+    d.pressKey(kKeyS, true);
+    EXPECT_EQ(loadPreset(scratch.path / "a.json"), d.s);
+    d.click("presets.saveAsPath");
+    d.pressKey(65, true);  // Ctrl+A selects all, then type over it
+    d.typeText((scratch.path / "b").string().c_str());
+    d.click("presets.saveAs");
+    ASSERT_TRUE(d.ui().errors().empty()) << d.ui().errors().front();
+    EXPECT_EQ(d.ui().presetFile(), scratch.path / "b.json");
+    EXPECT_EQ(loadPreset(scratch.path / "b.json"), d.s);
+}
+
+TEST_F(EditorUiTest, AnInvalidPresetShowsItsErrorsInsteadOfThrowing) {
+    const auto bad = scratch.write("bad.json", R"({"version": 1, "cascades": {"count": 12}})");
+    d.in.presetFiles = {bad};
+    d.frame();
+    const Settings before = d.s;
+    EXPECT_NO_THROW(d.click("preset:bad.json"));
+    EXPECT_EQ(d.s, before);
+    ASSERT_EQ(d.ui().errors().size(), 1u);
+    EXPECT_NE(d.ui().errors().front().find("cascades.count: must be in 1..8, got 12"), std::string::npos)
+        << d.ui().errors().front();
+    EXPECT_FALSE(d.last.presetLoaded);
+}
+
+TEST_F(EditorUiTest, LoadingOverUnsavedChangesAsksFirst) {
+    Settings other;
+    other.cascades.lambda = 0.9f;
+    savePresetAtomic(other, scratch.path / "other.json");
+    d.in.presetFiles = {scratch.path / "other.json"};
+    dragElevation();
+    const Settings edited = d.s;
+    d.click("preset:other.json");
+    EXPECT_EQ(d.s, edited) << "nothing is discarded before the user confirms";
+    ASSERT_TRUE(d.drawn("confirm.discard"));
+    d.click("confirm.cancel");
+    EXPECT_EQ(d.s, edited);
+    d.frame();
+    EXPECT_FALSE(d.drawn("confirm.discard"));
+    d.click("preset:other.json");
+    d.click("confirm.discard");
+    EXPECT_EQ(d.s, other);
+    EXPECT_TRUE(d.last.presetLoaded);
+    EXPECT_EQ(d.ui().presetFile(), scratch.path / "other.json");
+    EXPECT_FALSE(d.ui().dirty());
+}
+
+TEST_F(EditorUiTest, QuitWithNothingUnsavedIsImmediate) {
+    d.ui().requestQuit();
+    d.frame();
+    EXPECT_TRUE(d.last.quit);
+}
+
+TEST_F(EditorUiTest, QuitWithUnsavedChangesAsksFirst) {
+    dragElevation();
+    d.ui().requestQuit();
+    d.frame();
+    EXPECT_FALSE(d.last.quit);
+    ASSERT_TRUE(d.drawn("confirm.discard"));
+    d.click("confirm.discard");
+    EXPECT_TRUE(d.last.quit);
+}
+
+TEST_F(EditorUiTest, CrossFieldProblemsAreReportedNotThrown) {
+    d.s.camera.nearPlane = 50.0f;
+    d.s.camera.farPlane = 10.0f;
+    EXPECT_NO_THROW(d.frames(2));
+    EXPECT_FALSE(d.last.settingsValid);
+    d.s.camera.farPlane = 100.0f;
+    d.frame();
+    EXPECT_TRUE(d.last.settingsValid);
+}
+
+TEST_F(EditorUiTest, ClickingAShadowTileOpensTheZoomWindow) {
+    d.in.shadowLayers = {fakeTexture(11), fakeTexture(12), fakeTexture(13), fakeTexture(14)};
+    d.in.shadowMapSize = 1024;
+    d.frame();
+    EXPECT_TRUE(d.drawn("shadow.tile3"));
+    EXPECT_FALSE(d.drawn("shadow.zoom"));
+    d.click("shadow.tile2");
+    EXPECT_TRUE(d.drawn("shadow.zoom"));
+    d.in.shadowLayers.resize(2);  // cascade count went down: the zoom closes instead of reading past the end
+    d.frame();
+    EXPECT_FALSE(d.drawn("shadow.zoom"));
+}
+
+TEST_F(EditorUiTest, SideViewReportsItsSizeAndOrbitDrags) {
+    d.in.sideView = fakeTexture(7);
+    d.frame();
+    const auto r = d.rect("sideView");
+    EXPECT_GT(d.last.sideViewSize.x, 100.0f);
+    d.mouse(r.center(), false);
+    d.frame();
+    d.mouse(r.center(), true);
+    d.frame();
+    d.mouse({r.center().x + 15.0f, r.center().y}, true);
+    d.frame();
+    EXPECT_EQ(d.last.sideViewOrbit.x, 15.0f);
+    d.mouse(r.center(), false);
+    d.frame();
+}
+
+TEST_F(EditorUiTest, AnimatedSunTurnsTheAzimuthAtItsRate) {
+    const float before = d.s.light.azimuth;
+    d.click("sun.animate");
+    const float afterClick = d.s.light.azimuth;
+    EXPECT_EQ(afterClick, before);  // the toggle is UI state; turning starts with the next frame
+    d.frames(60);  // one second at 10 deg/s
+    EXPECT_NEAR(d.s.light.azimuth - afterClick, 10.0f, 0.01f);
+    EXPECT_EQ(d.last.change, ChangeClass::Uniform);
+}
+
+TEST_F(EditorUiTest, ViewShortcutsBecomeRequestsAndF1TogglesHelp) {
+    EXPECT_FALSE(d.drawn("help"));
+    d.pressKey(kKeyF1);
+    d.frame();
+    EXPECT_TRUE(d.drawn("help"));
+    d.pressKey(kKeyF1);
+    EXPECT_FALSE(d.drawn("help"));
+    ImGui::GetIO().KeysDown[kKeyTab] = true;
+    d.frame();
+    EXPECT_TRUE(d.last.swapSideView);
+    ImGui::GetIO().KeysDown[kKeyTab] = false;
+    ImGui::GetIO().KeysDown[70] = true;  // F
+    d.frame();
+    EXPECT_TRUE(d.last.frameScene);
+    ImGui::GetIO().KeysDown[70] = false;
+    d.frame();
+}

@@ -1,0 +1,63 @@
+#include "ui/document.h"
+
+#include "renderer/settings/settings_json.h"
+
+#include <exception>
+
+namespace st::ui {
+
+bool isDirty(const Document& doc, const Settings& s) { return doc.clean && *doc.clean != s; }
+
+bool loadDocument(Document& doc, const std::filesystem::path& file, Settings& s) {
+    try {
+        Settings loaded = loadPreset(file);
+        s = loaded;
+        doc.file = file;
+        doc.clean = std::move(loaded);
+        doc.errors.clear();
+        doc.status = "Loaded " + file.string();
+        return true;
+    } catch (const SettingsError& e) {
+        doc.errors = e.messages();
+    } catch (const std::exception& e) {
+        doc.errors = {file.string() + ": " + e.what()};
+    }
+    doc.status.clear();
+    return false;
+}
+
+bool saveDocument(Document& doc, const Settings& s, const std::filesystem::path& file) {
+    if (file.empty()) {
+        doc.errors = {"Save: no file name given"};
+        return false;
+    }
+    try {
+        savePresetAtomic(s, file);
+        doc.file = file;
+        doc.clean = s;
+        doc.errors.clear();
+        doc.status = "Saved " + file.string();
+        return true;
+    } catch (const SettingsError& e) {
+        doc.errors = e.messages();
+    } catch (const std::exception& e) {
+        doc.errors = {file.string() + ": " + e.what()};
+    }
+    doc.status.clear();
+    return false;
+}
+
+std::filesystem::path resolveSavePath(const std::filesystem::path& presetDir, const std::string& text) {
+    if (text.empty()) return {};
+    std::filesystem::path path(text);
+    if (path.is_relative()) path = presetDir / path;
+    if (!path.has_extension()) path += ".json";
+    return path;
+}
+
+std::string documentTitle(const Document& doc, bool dirty) {
+    const std::string name = doc.file.empty() ? "untitled" : doc.file.filename().string();
+    return "shadowtune - " + name + (dirty ? " *" : "");
+}
+
+}  // namespace st::ui

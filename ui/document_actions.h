@@ -1,0 +1,33 @@
+#pragma once
+// What menu items, buttons and shortcuts do to the document and the settings: load (asking first
+// when changes would be lost), save, undo/redo, quit. Shared so every path behaves the same.
+#include "ui/ui_state.h"
+
+#include <filesystem>
+
+namespace st::ui {
+
+// Loads `file`, or opens the discard confirmation first when there are unsaved changes.
+void requestLoad(UiFrame& f, const std::filesystem::path& file);
+void loadNow(UiFrame& f, const std::filesystem::path& file);
+
+// Saves to the current file; without one, to the "Save as" path.
+void saveCurrent(UiFrame& f);
+void saveAs(UiFrame& f, const std::filesystem::path& file);
+
+// Quits at once when nothing is unsaved, otherwise after the confirmation.
+void requestQuitFrom(UiState& state, bool dirty);
+
+// Carries out the action the confirmation held (the user chose to discard).
+void runPendingDiscard(UiFrame& f);
+
+// Records the widget edit in progress as one undo step once no widget is active any more.
+void trackEditGesture(UiFrame& f, const Settings& beforeWidgets);
+
+void undoEdit(UiFrame& f);
+void redoEdit(UiFrame& f);
+
+// The undo history starts over (after a load or a new document).
+void resetHistory(UiState& state);
+
+}  // namespace st::ui

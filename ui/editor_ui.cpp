@@ -1,0 +1,98 @@
+#include "ui/editor_ui.h"
+
+#include "ui/document_actions.h"
+#include "ui/field_rules.h"
+#include "ui/field_widgets.h"
+#include "ui/figures_panel.h"
+#include "ui/panels.h"
+#include "ui/ui_state.h"
+
+#include <imgui.h>
+
+namespace st::ui {
+namespace {
+
+// The "animate sun" toggle turns light.azimuth through the field table, like any other edit.
+void animateSun(UiFrame& f) {
+    if (!f.state.animateSun) return;
+    const FieldInfo* azimuth = findField("light.azimuth");
+    if (!azimuth) return;
+    const float delta = f.state.sunDegPerSecond * ImGui::GetIO().DeltaTime;
+    storeField(*azimuth, f.s, advanceAzimuth(f.s.light.azimuth, delta));
+}
+
+void beginFrame(UiFrame& f) {
+    if (!f.state.doc.clean) f.state.doc.clean = f.s;
+    f.state.rects.clear();
+    recordTimings(f.state.timing, f.in.stats, f.in.cpuFrameMs);
+    if (f.state.saveAsText.empty()) f.state.saveAsText = (f.state.presetDir / "untitled.json").string();
+}
+
+void drawPanels(UiFrame& f) {
+    drawMenuBar(f);
+    drawSettingsPanel(f);
+    drawPresetsPanel(f);
+    drawShadowViewer(f);
+    drawSideView(f);
+    drawHelpWindow(f);
+    drawConfirmDiscard(f);
+}
+
+void finishFrame(UiFrame& f, const Settings& atStart) {
+    f.req.change = classifyChange(atStart, f.s);
+    f.req.settingsValid = f.req.change == ChangeClass::None ? f.state.issues.empty() : validate(f.s).empty();
+    f.req.quit = f.state.quitConfirmed;
+    f.state.dirty = isDirty(f.state.doc, f.s);
+}
+
+}  // namespace
+
+EditorUi::EditorUi(std::filesystem::path presetDir, ShortcutKeys keys) : state_(std::make_unique<UiState>()) {
+    state_->presetDir = std::move(presetDir);
+    state_->keys = keys;
+}
+
+EditorUi::~EditorUi() = default;
+
+UiRequests EditorUi::draw(Settings& s, const UiInputs& in) {
+    UiRequests req;
+    UiFrame f{*state_, s, in, req};
+    const Settings atStart = s;
+    beginFrame(f);
+    animateSun(f);
+    handleShortcuts(f);
+    const Settings beforeWidgets = s;
+    drawPanels(f);
+    trackEditGesture(f, beforeWidgets);
+    finishFrame(f, atStart);
+    return req;
+}
+
+void EditorUi::setDocument(const Settings& clean, std::filesystem::path file) {
+    state_->doc = Document{std::move(file), clean, {}, {}};
+    state_->dirty = false;
+    if (!state_->doc.file.empty()) state_->saveAsText = state_->doc.file.string();
+    resetHistory(*state_);
+}
+
+bool EditorUi::openPreset(const std::filesystem::path& file, Settings& s) {
+    if (!loadDocument(state_->doc, file, s)) return false;
+    state_->dirty = false;
+    state_->saveAsText = file.string();
+    resetHistory(*state_);
+    return true;
+}
+
+void EditorUi::requestQuit() { requestQuitFrom(*state_, state_->dirty); }
+
+bool EditorUi::dirty() const { return state_->dirty; }
+
+std::string EditorUi::windowTitle() const { return documentTitle(state_->doc, state_->dirty); }
+
+const std::filesystem::path& EditorUi::presetFile() const { return state_->doc.file; }
+
+const std::vector<std::string>& EditorUi::errors() const { return state_->doc.errors; }
+
+const ItemRects& EditorUi::itemRects() const { return state_->rects; }
+
+}  // namespace st::ui

@@ -1,0 +1,105 @@
+#pragma once
+// The editor's Dear ImGui layer: the one entry point the app calls each frame.
+//
+// The app owns the ImGui context and the platform/renderer backends (GLFW + OpenGL3); ui/ never
+// calls GL or GLFW. Each frame:
+//
+//     ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplGlfw_NewFrame(); ImGui::NewFrame();
+//     UiRequests r = ui.draw(settings, inputs);   // edits `settings` in place
+//     ImGui::Render(); ... render the scene with `settings` ...; ImGui_ImplOpenGL3_RenderDrawData(...)
+//     if (r.change != ChangeClass::None && r.settingsValid) apply it (r.change says how much to redo)
+//
+// Every widget comes from the settings field table and writes through FieldInfo::set, clamped to
+// the field's range; cross-field problems (validate()) are shown in red, never thrown. Presets
+// are loaded and saved here (atomically); the app only lists the files and reacts to requests.
+#include "renderer/render/frame_stats.h"
+#include "renderer/settings/field_table.h"
+#include "renderer/settings/settings.h"
+#include "ui/item_rects.h"
+
+#include <imgui.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace st::ui {
+
+struct UiState;
+
+// What the app shows the UI this frame. Nothing here is written back.
+struct UiInputs {
+    const FrameStats* stats = nullptr;       // the last rendered frame's figures; nullptr: none yet
+    double cpuFrameMs = 0.0;                 // wall time of the previous frame (the CPU plot)
+    std::vector<ImTextureID> shadowLayers;   // one GL texture per cascade, depth already remapped for
+                                             // display; shown with texel row 0 at the bottom
+    int shadowMapSize = 0;                   // texels per side of those layers
+    ImTextureID sideView = nullptr;          // picture-in-picture image (the side camera, or the main
+                                             // view when swapped); nullptr hides the window
+    std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
+    std::string statusLine;                  // one line from the app (scene load error, fps, ...)
+};
+
+// What the app should do after this frame. Default: nothing.
+struct UiRequests {
+    ChangeClass change = ChangeClass::None;  // what changed in Settings during draw(): widgets,
+                                             // undo/redo, a loaded preset, the animated sun
+    bool settingsValid = true;               // validate(settings) is empty; if not, keep rendering
+                                             // the last valid settings (the problems are on screen)
+    bool presetLoaded = false;               // settings were replaced by presetFile(): resolve a
+                                             // relative glTF scene against its folder
+    bool presetsChanged = false;             // a preset file was written: rescan the preset folder
+    bool quit = false;                       // quit now (confirmed, or nothing unsaved)
+    bool frameScene = false;                 // F, or View > Frame scene
+    bool swapSideView = false;               // Tab, or View > Swap side view
+    ImVec2 sideViewSize{0.0f, 0.0f};         // pixels the side view image is shown at (0: hidden)
+    ImVec2 sideViewOrbit{0.0f, 0.0f};        // mouse movement dragged with the left/right button
+    ImVec2 sideViewPan{0.0f, 0.0f};          // ... with the middle button
+    float sideViewZoom = 0.0f;               // mouse wheel over the side view
+};
+
+// Native key codes the platform backend writes into io.KeysDown. ImGui 1.86 names only a few keys
+// (Tab and Z are read through io.KeyMap); the defaults are GLFW_KEY_S, GLFW_KEY_F and GLFW_KEY_F1,
+// which is what imgui_impl_glfw 1.86 stores.
+struct ShortcutKeys {
+    int save = 83;    // Ctrl+S
+    int frame = 70;   // F: frame the scene
+    int help = 290;   // F1: help window
+};
+
+class EditorUi {
+public:
+    // presetDir: where "Save as" puts relative names (usually presets/).
+    explicit EditorUi(std::filesystem::path presetDir, ShortcutKeys keys = {});
+    ~EditorUi();
+    EditorUi(const EditorUi&) = delete;
+    EditorUi& operator=(const EditorUi&) = delete;
+
+    // Draws every panel and edits `s`. Call between ImGui::NewFrame() and ImGui::Render().
+    UiRequests draw(Settings& s, const UiInputs& in);
+
+    // The settings the app starts with and the preset they came from (empty path: untitled);
+    // they become the clean state and the undo history is cleared. Without a call, the first
+    // draw() takes its settings as clean.
+    void setDocument(const Settings& clean, std::filesystem::path file);
+
+    // Loads `file` into `s` (no confirmation asked). On failure `s` is untouched, the problems
+    // are listed in the Presets panel and the result is false. Clears the undo history.
+    bool openPreset(const std::filesystem::path& file, Settings& s);
+
+    // The window's close button was pressed: a later draw() returns quit, after a confirmation
+    // if there are unsaved changes.
+    void requestQuit();
+
+    bool dirty() const;                                // as of the last draw()
+    std::string windowTitle() const;                   // "shadowtune - default.json *"
+    const std::filesystem::path& presetFile() const;   // empty: untitled
+    const std::vector<std::string>& errors() const;    // of the last failed load/save (shown in the UI)
+    const ItemRects& itemRects() const;                // named widgets of the last draw() (tests)
+
+private:
+    std::unique_ptr<UiState> state_;
+};
+
+}  // namespace st::ui

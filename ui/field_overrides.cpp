@@ -1,0 +1,103 @@
+#include "ui/field_overrides.h"
+
+#include "renderer/scene/scene.h"
+#include "ui/field_rules.h"
+#include "ui/field_widgets.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <span>
+#include <variant>
+
+namespace st::ui {
+namespace {
+
+constexpr std::string_view kBuiltin = "builtin:";
+
+bool isBuiltin(const std::string& scene) { return scene.starts_with(kBuiltin); }
+
+// The glTF path field shows the scene when it is a file; it keeps what the user types otherwise.
+void syncGltfText(UiState& state, const std::string& scene) {
+    if (scene == state.gltfTextFor) return;
+    state.gltfTextFor = scene;
+    if (!isBuiltin(scene)) state.gltfText = scene;
+}
+
+bool drawBuiltinCombo(const FieldInfo& field, UiFrame& f, const std::string& scene) {
+    std::string chosen = scene;
+    const std::string preview = isBuiltin(scene) ? scene : "glTF file";
+    if (ImGui::BeginCombo(std::string(field.label).c_str(), preview.c_str())) {
+        for (const auto& name : builtinSceneNames()) {
+            const std::string spec = std::string(kBuiltin) + name;
+            if (ImGui::Selectable(spec.c_str(), spec == scene)) chosen = spec;
+        }
+        ImGui::EndCombo();
+    }
+    recordItem(f.state.rects, std::string(field.path));
+    drawHelpMarker(field);
+    return storeField(field, f.s, chosen);
+}
+
+bool drawGltfPath(const FieldInfo& field, UiFrame& f) {
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - 45.0f);
+    const bool entered = ImGui::InputTextWithHint("##gltf", "path/to/scene.gltf", &f.state.gltfText,
+                                                  ImGuiInputTextFlags_EnterReturnsTrue);
+    recordItem(f.state.rects, "scene.gltf");
+    ImGui::SameLine();
+    const bool use = ImGui::Button("Use");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("glTF file");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("A .gltf/.glb path, relative to the preset's folder; Enter or Use loads it.");
+    if (!(entered || use) || f.state.gltfText.empty()) return false;
+    return storeField(field, f.s, f.state.gltfText);
+}
+
+bool drawScene(const FieldInfo& field, UiFrame& f) {
+    const FieldValue value = field.get(f.s);
+    const auto* scene = std::get_if<std::string>(&value);
+    if (!scene) return drawFieldWidget(field, f.s, f.state.rects);
+    syncGltfText(f.state, *scene);
+    const bool picked = drawBuiltinCombo(field, f, *scene);
+    const bool typed = drawGltfPath(field, f);
+    return picked || typed;
+}
+
+bool drawMapSize(const FieldInfo& field, UiFrame& f) {
+    const int count = f.s.cascades.count;
+    const bool changed = editPowerOfTwo(field, f.s, [count](int size) {
+        return "(" + formatBytes(shadowMapBytes(count, size)) + ")";
+    });
+    recordItem(f.state.rects, std::string(field.path));
+    drawHelpMarker(field);
+    const int size = f.s.cascades.mapSize;
+    ImGui::TextDisabled("  %d x %d x %d x 4 B = %s of shadow maps", count, size, size,
+                        formatBytes(shadowMapBytes(count, size)).c_str());
+    return changed;
+}
+
+std::span<const float> rendererSplits(const UiFrame& f) {
+    if (!f.in.stats) return {};
+    return f.in.stats->splits;
+}
+
+bool drawManualSplits(const FieldInfo& field, UiFrame& f) {
+    if (f.s.cascades.scheme != SplitScheme::Manual) return false;
+    const FieldValue value = field.get(f.s);
+    const auto* stored = std::get_if<std::vector<float>>(&value);
+    if (!stored) return drawFieldWidget(field, f.s, f.state.rects);
+    std::vector<float> splits = fitManualSplits(f.s, rendererSplits(f));
+    editFloatElements(field, splits, f.state.rects);
+    return storeField(field, f.s, splits);
+}
+
+}  // namespace
+
+FieldOverride overrideFor(std::string_view path) {
+    if (path == "scene") return drawScene;
+    if (path == "cascades.mapSize") return drawMapSize;
+    if (path == "cascades.manualSplits") return drawManualSplits;
+    return nullptr;
+}
+
+}  // namespace st::ui

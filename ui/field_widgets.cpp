@@ -1,0 +1,217 @@
+#include "ui/field_widgets.h"
+
+#include "renderer/settings/number_text.h"
+#include "ui/field_rules.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <glm/vec3.hpp>
+
+#include <variant>
+#include <vector>
+
+namespace st::ui {
+namespace {
+
+std::string labelOf(const FieldInfo& field) { return std::string(field.label); }
+
+float lowOf(const FieldInfo& field) { return static_cast<float>(field.min); }
+float highOf(const FieldInfo& field) { return static_cast<float>(field.max); }
+float speedOf(const FieldInfo& field) { return field.step > 0.0 ? static_cast<float>(field.step) : 0.1f; }
+
+bool showUnsupported(const FieldInfo& field) {
+    ImGui::TextDisabled("%s: set in the preset file", labelOf(field).c_str());
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s (%s): the editor has no widget for this kind of field yet.",
+                          std::string(field.path).c_str(), std::string(fieldKindName(field.kind)).c_str());
+    }
+    return false;
+}
+
+bool editFloat(const FieldInfo& field, Settings& s) {
+    const FieldValue current = field.get(s);
+    const float* stored = std::get_if<float>(&current);
+    if (!stored) return showUnsupported(field);
+    float value = *stored;
+    const std::string format = floatFormat(field);
+    const bool changed = prefersSlider(field)
+        ? ImGui::SliderFloat(labelOf(field).c_str(), &value, lowOf(field), highOf(field), format.c_str(),
+                             ImGuiSliderFlags_AlwaysClamp)
+        : ImGui::DragFloat(labelOf(field).c_str(), &value, speedOf(field), lowOf(field), highOf(field),
+                           format.c_str(), ImGuiSliderFlags_AlwaysClamp);
+    return changed && storeField(field, s, static_cast<float>(clampToField(field, value)));
+}
+
+bool editInt(const FieldInfo& field, Settings& s) {
+    if (field.powerOfTwo) return editPowerOfTwo(field, s, nullptr);
+    const FieldValue current = field.get(s);
+    const int* stored = std::get_if<int>(&current);
+    if (!stored) return showUnsupported(field);
+    int value = *stored;
+    const int step = field.step >= 1.0 ? static_cast<int>(field.step) : 1;
+    const bool changed = (prefersSlider(field) && !field.odd)
+        ? ImGui::SliderInt(labelOf(field).c_str(), &value, static_cast<int>(field.min),
+                           static_cast<int>(field.max), intFormat(field).c_str(), ImGuiSliderFlags_AlwaysClamp)
+        : ImGui::InputInt(labelOf(field).c_str(), &value, step, step * 10);
+    return changed && storeField(field, s, legalInt(field, value, *stored));
+}
+
+bool editBool(const FieldInfo& field, Settings& s) {
+    const FieldValue current = field.get(s);
+    const bool* stored = std::get_if<bool>(&current);
+    if (!stored) return showUnsupported(field);
+    bool value = *stored;
+    return ImGui::Checkbox(labelOf(field).c_str(), &value) && storeField(field, s, value);
+}
+
+bool editEnum(const FieldInfo& field, Settings& s) {
+    const FieldValue current = field.get(s);
+    const int* stored = std::get_if<int>(&current);
+    if (!stored || field.enumNames.empty()) return showUnsupported(field);
+    const auto count = static_cast<int>(field.enumNames.size());
+    const std::string preview = (*stored >= 0 && *stored < count)
+        ? std::string(field.enumNames[static_cast<std::size_t>(*stored)]) : "<invalid>";
+    int chosen = *stored;
+    if (ImGui::BeginCombo(labelOf(field).c_str(), preview.c_str())) {
+        for (int i = 0; i < count; ++i) {
+            const std::string name(field.enumNames[static_cast<std::size_t>(i)]);
+            if (ImGui::Selectable(name.c_str(), i == *stored)) chosen = i;
+        }
+        ImGui::EndCombo();
+    }
+    return chosen != *stored && storeField(field, s, chosen);
+}
+
+bool editString(const FieldInfo& field, Settings& s) {
+    const FieldValue current = field.get(s);
+    const std::string* stored = std::get_if<std::string>(&current);
+    if (!stored) return showUnsupported(field);
+    std::string value = *stored;
+    return ImGui::InputText(labelOf(field).c_str(), &value) && storeField(field, s, value);
+}
+
+bool editVec3(const FieldInfo& field, Settings& s) {
+    const FieldValue current = field.get(s);
+    const glm::vec3* stored = std::get_if<glm::vec3>(&current);
+    if (!stored) return showUnsupported(field);
+    glm::vec3 value = *stored;
+    if (!ImGui::DragFloat3(labelOf(field).c_str(), &value.x, speedOf(field), lowOf(field), highOf(field),
+                           floatFormat(field).c_str(), ImGuiSliderFlags_AlwaysClamp)) {
+        return false;
+    }
+    for (int i = 0; i < 3; ++i) value[i] = static_cast<float>(clampToField(field, value[i]));
+    return storeField(field, s, value);
+}
+
+bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects) {
+    const FieldValue current = field.get(s);
+    const auto* stored = std::get_if<std::vector<float>>(&current);
+    if (!stored) return showUnsupported(field);
+    std::vector<float> values = *stored;
+    bool changed = editFloatElements(field, values, rects);
+    if (ImGui::SmallButton("Add")) {
+        values.push_back(values.empty() ? static_cast<float>(field.min) : values.back());
+        changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Remove last") && !values.empty()) {
+        values.pop_back();
+        changed = true;
+    }
+    return changed && storeField(field, s, values);
+}
+
+bool dispatch(const FieldInfo& field, Settings& s, ItemRects& rects) {
+    switch (field.kind) {
+        case FieldKind::Float: return editFloat(field, s);
+        case FieldKind::Int: return editInt(field, s);
+        case FieldKind::Bool: return editBool(field, s);
+        case FieldKind::Enum: return editEnum(field, s);
+        case FieldKind::String: return editString(field, s);
+        case FieldKind::Vec3: return editVec3(field, s);
+        case FieldKind::FloatList: return editFloatList(field, s, rects);
+        default: return showUnsupported(field);  // a kind added to the table after this code
+    }
+}
+
+std::string rangeText(const FieldInfo& field) {
+    if (field.kind == FieldKind::Bool || field.kind == FieldKind::Enum || field.kind == FieldKind::String) return {};
+    std::string text = "Range " + formatNumber(field.min) + " .. " + formatNumber(field.max);
+    if (!field.unit.empty()) text += " " + std::string(field.unit);
+    if (field.powerOfTwo) text += ", powers of two";
+    if (field.odd) text += ", odd";
+    return text;
+}
+
+}  // namespace
+
+bool storeField(const FieldInfo& field, Settings& s, const FieldValue& value) {
+    if (!field.set || field.get(s) == value) return false;
+    field.set(s, value);
+    return true;
+}
+
+bool drawFieldWidget(const FieldInfo& field, Settings& s, ItemRects& rects) {
+    if (!field.get || !field.set) return showUnsupported(field);
+    const bool changed = dispatch(field, s, rects);
+    if (field.kind == FieldKind::FloatList) return changed;  // elements and marker drawn by the list
+    recordItem(rects, std::string(field.path));
+    drawHelpMarker(field);
+    return changed;
+}
+
+void drawHelpMarker(const FieldInfo& field) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(field.help.data(), field.help.data() + field.help.size());
+    const std::string range = rangeText(field);
+    if (!range.empty()) ImGui::TextDisabled("%s", range.c_str());
+    ImGui::TextDisabled("%s  (a change: %s)", std::string(field.path).c_str(),
+                        std::string(changeClassName(field.change)).c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std::string(int)>& note) {
+    const FieldValue current = field.get(s);
+    const int* stored = std::get_if<int>(&current);
+    if (!stored) return showUnsupported(field);
+    const auto text = [&](int size) {
+        std::string t = std::to_string(size) + (field.unit.empty() ? "" : " " + std::string(field.unit));
+        return note ? t + "   " + note(size) : t;
+    };
+    int chosen = *stored;
+    if (ImGui::BeginCombo(labelOf(field).c_str(), text(*stored).c_str())) {
+        for (const int size : powerOfTwoChoices(field)) {
+            if (ImGui::Selectable(text(size).c_str(), size == *stored)) chosen = size;
+        }
+        ImGui::EndCombo();
+    }
+    return chosen != *stored && storeField(field, s, chosen);
+}
+
+bool editFloatElements(const FieldInfo& field, std::vector<float>& values, ItemRects& rects) {
+    ImGui::TextUnformatted(field.label.data(), field.label.data() + field.label.size());
+    drawHelpMarker(field);
+    bool changed = false;
+    const std::string format = floatFormat(field);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        const std::string label = std::string(field.label) + " " + std::to_string(i + 1);
+        float value = values[i];
+        if (ImGui::DragFloat(label.c_str(), &value, speedOf(field), lowOf(field), highOf(field), format.c_str(),
+                             ImGuiSliderFlags_AlwaysClamp)) {
+            values[i] = static_cast<float>(clampToField(field, value));
+            changed = true;
+        }
+        recordItem(rects, std::string(field.path) + "[" + std::to_string(i) + "]");
+        ImGui::PopID();
+    }
+    return changed;
+}
+
+}  // namespace st::ui

@@ -1,0 +1,102 @@
+#include "ui/figures_panel.h"
+
+#include "ui/field_rules.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <string>
+
+namespace st::ui {
+namespace {
+
+std::string splitList(const FrameStats& stats) {
+    std::string text;
+    for (const float split : stats.splits) text += (text.empty() ? "" : " | ") + formatLength(split);
+    return text;
+}
+
+void geometryRow(int index, const CascadeStats& c) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%d", index);
+    ImGui::TableNextColumn();
+    ImGui::Text("%s - %s", formatLength(c.vsNear).c_str(), formatLength(c.vsFar).c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%s x %s", formatLength(c.lsExtent.x).c_str(), formatLength(c.lsExtent.y).c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%s", formatLength(c.lsExtent.z).c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%s", formatLength(c.texelWorldSize).c_str());
+}
+
+void costRow(int index, const CascadeStats& c) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%d", index);
+    ImGui::TableNextColumn();
+    ImGui::Text("%d", c.casterDraws);
+    ImGui::TableNextColumn();
+    ImGui::Text("%zu", c.casterTriangles);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f ms", c.gpuMs);
+}
+
+constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+
+void headers(std::initializer_list<const char*> names) {
+    for (const char* name : names) ImGui::TableSetupColumn(name);
+    ImGui::TableHeadersRow();
+}
+
+void geometryTable(const FrameStats& stats) {
+    if (!ImGui::BeginTable("cascadeGeometry", 5, kTableFlags)) return;
+    headers({"#", "view depth", "light box x*y", "z range", "texel"});
+    for (std::size_t i = 0; i < stats.cascades.size(); ++i) geometryRow(static_cast<int>(i), stats.cascades[i]);
+    ImGui::EndTable();
+}
+
+void costTable(const FrameStats& stats) {
+    if (!ImGui::BeginTable("cascadeCost", 4, kTableFlags)) return;
+    headers({"#", "caster draws", "triangles", "GPU"});
+    for (std::size_t i = 0; i < stats.cascades.size(); ++i) costRow(static_cast<int>(i), stats.cascades[i]);
+    ImGui::EndTable();
+}
+
+void plot(const char* label, const History& history) {
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%.2f ms (mean %.2f)", history.latest(), history.mean());
+    ImGui::PlotLines(label, history.data(), static_cast<int>(history.size()), static_cast<int>(history.offset()),
+                     overlay, 0.0f, history.max() * 1.25f + 0.01f, ImVec2(0.0f, 42.0f));
+}
+
+}  // namespace
+
+void drawCascadeFigures(const FrameStats* stats) {
+    ImGui::Separator();
+    if (!stats) {
+        ImGui::TextDisabled("No frame rendered yet: figures appear after the first frame.");
+        return;
+    }
+    ImGui::TextWrapped("Splits: %s", splitList(*stats).c_str());
+    ImGui::Text("Shadow maps: %s   scene: %zu triangles", formatBytes(stats->shadowMapBytes).c_str(),
+                stats->sceneTriangles);
+    geometryTable(*stats);
+    costTable(*stats);
+}
+
+void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats) {
+    if (stats) ImGui::Text("GPU: shadow %.2f ms, main %.2f ms", stats->gpuShadowMs, stats->gpuMainMs);
+    plot("GPU shadow", timing.gpuShadowMs);
+    plot("GPU main", timing.gpuMainMs);
+    plot("CPU frame", timing.cpuFrameMs);
+}
+
+void recordTimings(TimingHistory& timing, const FrameStats* stats, double cpuFrameMs) {
+    timing.cpuFrameMs.push(static_cast<float>(cpuFrameMs));
+    if (!stats) return;
+    timing.gpuShadowMs.push(static_cast<float>(stats->gpuShadowMs));
+    timing.gpuMainMs.push(static_cast<float>(stats->gpuMainMs));
+}
+
+}  // namespace st::ui

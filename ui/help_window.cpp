@@ -1,0 +1,58 @@
+// The help window (F1): every shortcut of the editor, the app's camera keys included.
+#include "ui/layout.h"
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+#include <array>
+
+namespace st::ui {
+namespace {
+
+struct Shortcut {
+    const char* keys;
+    const char* action;
+};
+
+constexpr std::array<Shortcut, 11> kShortcuts{{
+    {"Right mouse + W A S D", "fly the camera"},
+    {"Right mouse + Q / E", "fly down / up"},
+    {"Mouse wheel", "fly speed"},
+    {"Middle mouse drag", "pan the camera"},
+    {"F", "frame the scene"},
+    {"Tab", "swap the side view with the main view"},
+    {"Drag / wheel on side view", "orbit / zoom the side camera"},
+    {"Ctrl+Z", "undo a settings change"},
+    {"Ctrl+Shift+Z", "redo"},
+    {"Ctrl+S", "save the preset"},
+    {"F1", "show or hide this help"},
+}};
+
+void drawTable() {
+    if (!ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) return;
+    for (const Shortcut& s : kShortcuts) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(s.keys);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(s.action);
+    }
+    ImGui::EndTable();
+}
+
+}  // namespace
+
+void drawHelpWindow(UiFrame& f) {
+    if (!f.state.showHelp) return;
+    placeNextWindow(Panel::Help);
+    if (ImGui::Begin("Help", &f.state.showHelp)) {
+        drawTable();
+        ImGui::Spacing();
+        ImGui::TextWrapped("Hover (?) next to a setting for what it does, its range and what a change costs. "
+                           "Camera keys work when no panel has the mouse or keyboard.");
+        recordItem(f.state.rects, "help");
+    }
+    ImGui::End();
+}
+
+}  // namespace st::ui

@@ -1,0 +1,17 @@
+#pragma once
+// The panels EditorUi::draw() calls, one file each. Each takes the frame bundle, reads
+// UiInputs, edits Settings only through the field table and reports through UiRequests.
+#include "ui/ui_state.h"
+
+namespace st::ui {
+
+void drawMenuBar(UiFrame& f);         // menu_bar.cpp: File / Edit / View
+void handleShortcuts(UiFrame& f);     // shortcuts.cpp: Ctrl+Z, Ctrl+Shift+Z, Ctrl+S, F, Tab, F1
+void drawSettingsPanel(UiFrame& f);   // settings_panel.cpp: every field, grouped, with issues
+void drawPresetsPanel(UiFrame& f);    // presets_panel.cpp: list, save, save as, undo, messages
+void drawShadowViewer(UiFrame& f);    // shadow_viewer.cpp: a tile per cascade, zoom on click
+void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with orbit input
+void drawHelpWindow(UiFrame& f);      // help_window.cpp: shortcuts (F1)
+void drawConfirmDiscard(UiFrame& f);  // confirm_modal.cpp: "discard unsaved changes?"
+
+}  // namespace st::ui

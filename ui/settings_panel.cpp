@@ -1,0 +1,143 @@
+// The Settings panel: every row of the field table as a widget, grouped by the first segment of
+// its JSON path in collapsing headers, with derived figures beside the knobs and the problems
+// validate() finds shown in red (under the field, and listed under the panel).
+#include "renderer/settings/validation.h"
+#include "ui/field_overrides.h"
+#include "ui/field_rules.h"
+#include "ui/field_widgets.h"
+#include "ui/figures_panel.h"
+#include "ui/layout.h"
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace st::ui {
+namespace {
+
+const ImVec4 kIssueColour{1.0f, 0.35f, 0.3f, 1.0f};
+
+struct FieldGroup {
+    std::string key;  // "camera"; fields without a dot ("scene", "notes") form the "scene" group
+    std::vector<const FieldInfo*> fields;
+};
+
+std::string groupKey(std::string_view path) {
+    const auto dot = path.find('.');
+    return dot == std::string_view::npos ? "scene" : std::string(path.substr(0, dot));
+}
+
+// Groups in the order their first field appears in the table.
+std::vector<FieldGroup> groupFields() {
+    std::vector<FieldGroup> groups;
+    for (const FieldInfo& field : fieldTable()) {
+        const std::string key = groupKey(field.path);
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const FieldGroup& g) { return g.key == key; });
+        if (it == groups.end()) it = groups.insert(groups.end(), FieldGroup{key, {}});
+        it->fields.push_back(&field);
+    }
+    return groups;
+}
+
+std::string titleOf(const std::string& key) {
+    std::string title = key;
+    if (!title.empty()) title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(title[0])));
+    return title;
+}
+
+void drawFieldIssues(const UiFrame& f, const FieldInfo& field) {
+    for (const SettingsIssue& issue : f.state.issues) {
+        const std::string_view path = issue.path;
+        if (path.substr(0, path.find('[')) != field.path) continue;
+        ImGui::PushStyleColor(ImGuiCol_Text, kIssueColour);
+        ImGui::TextWrapped("  %s %s", std::string(path.substr(field.path.size())).c_str(), issue.reason.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+void drawField(UiFrame& f, const FieldInfo& field) {
+    ImGui::PushID(field.path.data(), field.path.data() + field.path.size());
+    const FieldOverride custom = overrideFor(field.path);
+    const bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects);
+    f.edited = f.edited || changed;
+    drawFieldIssues(f, field);
+    ImGui::PopID();
+}
+
+void drawSunAnimation(UiFrame& f) {
+    ImGui::Checkbox("Animate sun", &f.state.animateSun);
+    recordItem(f.state.rects, "sun.animate");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+    ImGui::DragFloat("##sunSpeed", &f.state.sunDegPerSecond, 0.5f, -180.0f, 180.0f, "%.1f deg/s",
+                     ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Azimuth turn rate while the sun is animated (not saved).");
+}
+
+// What a group shows after its fields: the sun toggle, the cascade figures.
+void drawGroupExtras(UiFrame& f, const std::string& key) {
+    if (key == "light") drawSunAnimation(f);
+    if (key == "cascades") drawCascadeFigures(f.in.stats);
+}
+
+// The groups an artist tunes all day start open; output, measurement and new groups start closed.
+bool openByDefault(const std::string& key) {
+    for (const char* open : {"scene", "camera", "light", "cascades", "filter", "bias"}) {
+        if (key == open) return true;
+    }
+    return false;
+}
+
+void drawGroup(UiFrame& f, const FieldGroup& group) {
+    const ImGuiTreeNodeFlags flags = openByDefault(group.key) ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+    const bool open = ImGui::CollapsingHeader(titleOf(group.key).c_str(), flags);
+    recordItem(f.state.rects, "group." + group.key);
+    if (!open) return;
+    for (const FieldInfo* field : group.fields) drawField(f, *field);
+    drawGroupExtras(f, group.key);
+}
+
+void drawFields(UiFrame& f) {
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    for (const FieldGroup& group : groupFields()) drawGroup(f, group);
+    if (ImGui::CollapsingHeader("Performance", ImGuiTreeNodeFlags_DefaultOpen)) {
+        drawTimingPlots(f.state.timing, f.in.stats);
+    }
+    ImGui::PopItemWidth();
+}
+
+void drawIssueList(const UiFrame& f) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kIssueColour);
+    ImGui::TextWrapped("%zu problem%s: the renderer keeps the last valid settings", f.state.issues.size(),
+                       f.state.issues.size() == 1 ? "" : "s");
+    for (const SettingsIssue& issue : f.state.issues) ImGui::TextWrapped("%s", issue.message().c_str());
+    ImGui::PopStyleColor();
+}
+
+float issueListHeight(const UiFrame& f) {
+    if (f.state.issues.empty()) return 0.0f;
+    const auto lines = std::min<std::size_t>(1 + 2 * f.state.issues.size(), 8);
+    return ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(lines) + ImGui::GetStyle().ItemSpacing.y * 2.0f;
+}
+
+}  // namespace
+
+void drawSettingsPanel(UiFrame& f) {
+    f.state.issues = findIssues(f.s);
+    placeNextWindow(Panel::Settings);
+    if (ImGui::Begin("Settings")) {
+        const float footer = issueListHeight(f);
+        if (ImGui::BeginChild("fields", ImVec2(0.0f, -footer))) drawFields(f);
+        ImGui::EndChild();
+        if (footer > 0.0f) {
+            ImGui::Separator();
+            if (ImGui::BeginChild("issues")) drawIssueList(f);
+            ImGui::EndChild();
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace st::ui

@@ -1,0 +1,108 @@
+// The shadow-map viewer: one tile per cascade layer (textures from the app, depth already
+// remapped for display), and a bigger window for the layer clicked.
+#include "ui/field_rules.h"
+#include "ui/layout.h"
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+namespace st::ui {
+namespace {
+
+// GL textures have texel row 0 at the bottom; ImGui's uv (0, 0) is the top left of the quad.
+const ImVec2 kUvTopLeft{0.0f, 1.0f};
+const ImVec2 kUvBottomRight{1.0f, 0.0f};
+
+std::string tileTooltip(const UiFrame& f, int layer) {
+    std::string text = "Cascade " + std::to_string(layer);
+    if (f.in.shadowMapSize > 0) text += ", " + std::to_string(f.in.shadowMapSize) + " texels per side";
+    const FrameStats* stats = f.in.stats;
+    if (stats && static_cast<std::size_t>(layer) < stats->cascades.size()) {
+        const CascadeStats& c = stats->cascades[static_cast<std::size_t>(layer)];
+        text += "\nview depth " + formatLength(c.vsNear) + " - " + formatLength(c.vsFar) + ", texel " +
+                formatLength(c.texelWorldSize);
+    }
+    return text + "\nClick to zoom";
+}
+
+void drawTile(UiFrame& f, int layer, float size) {
+    ImGui::PushID(layer);
+    ImGui::BeginGroup();
+    ImGui::Image(f.in.shadowLayers[static_cast<std::size_t>(layer)], ImVec2(size, size), kUvTopLeft,
+                 kUvBottomRight, ImVec4(1, 1, 1, 1), ImVec4(0.5f, 0.5f, 0.5f, 1.0f));
+    recordItem(f.state.rects, "shadow.tile" + std::to_string(layer));
+    if (ImGui::IsItemClicked()) f.state.zoomLayer = layer;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tileTooltip(f, layer).c_str());
+    ImGui::Text("C%d", layer);
+    ImGui::EndGroup();
+    ImGui::PopID();
+}
+
+// The largest square tile for which all `count` tiles (each with a caption line) fit in `avail`.
+struct TileGrid {
+    int columns = 1;
+    float size = 0.0f;
+};
+
+TileGrid fitTiles(int count, ImVec2 avail) {
+    const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
+    const float caption = ImGui::GetTextLineHeightWithSpacing();
+    TileGrid best;
+    for (int columns = 1; columns <= count; ++columns) {
+        const int rows = (count + columns - 1) / columns;
+        const float byWidth = (avail.x - spacing.x * float(columns - 1)) / float(columns);
+        const float byHeight = (avail.y - float(rows) * (caption + spacing.y)) / float(rows);
+        const float size = std::min(byWidth, byHeight);
+        if (size > best.size) best = {columns, size};
+    }
+    best.size = std::clamp(best.size, 24.0f, 512.0f);
+    return best;
+}
+
+void drawTiles(UiFrame& f) {
+    const int count = static_cast<int>(f.in.shadowLayers.size());
+    if (count == 0) {
+        ImGui::TextDisabled("No shadow maps yet.");
+        return;
+    }
+    const TileGrid grid = fitTiles(count, ImGui::GetContentRegionAvail());
+    for (int layer = 0; layer < count; ++layer) {
+        if (layer % grid.columns != 0) ImGui::SameLine();
+        drawTile(f, layer, grid.size);
+    }
+}
+
+void drawZoomWindow(UiFrame& f) {
+    const int layer = f.state.zoomLayer;
+    if (layer < 0 || layer >= static_cast<int>(f.in.shadowLayers.size())) {
+        f.state.zoomLayer = -1;
+        return;
+    }
+    placeNextWindow(Panel::ShadowZoom);
+    bool open = true;
+    const std::string title = "Cascade " + std::to_string(layer) + "###shadowZoom";
+    if (ImGui::Begin(title.c_str(), &open)) {
+        const ImVec2 avail = ImGui::GetContentRegionAvail();
+        const float side = std::max(16.0f, std::min(avail.x, avail.y));
+        ImGui::Image(f.in.shadowLayers[static_cast<std::size_t>(layer)], ImVec2(side, side), kUvTopLeft, kUvBottomRight);
+        recordItem(f.state.rects, "shadow.zoom");
+    }
+    ImGui::End();
+    if (!open) f.state.zoomLayer = -1;
+}
+
+}  // namespace
+
+void drawShadowViewer(UiFrame& f) {
+    if (f.state.showShadowMaps) {
+        placeNextWindow(Panel::ShadowMaps);
+        if (ImGui::Begin("Shadow maps", &f.state.showShadowMaps)) drawTiles(f);
+        ImGui::End();
+    }
+    drawZoomWindow(f);
+}
+
+}  // namespace st::ui

@@ -1,0 +1,63 @@
+#pragma once
+// Everything EditorUi remembers between frames (STYLE.md: no static-local UI state, so a run can
+// be replayed), and the per-frame bundle the panels draw from. Internal to ui/.
+#include "renderer/settings/validation.h"
+#include "ui/document.h"
+#include "ui/editor_ui.h"
+#include "ui/history.h"
+#include "ui/undo_stack.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace st::ui {
+
+// An action that would discard unsaved changes, held while the confirmation modal is open.
+struct PendingDiscard {
+    enum class Kind { None, Load, Quit };
+    Kind kind = Kind::None;
+    std::filesystem::path file;  // for Load
+};
+
+struct UiState {
+    std::filesystem::path presetDir;
+    ShortcutKeys keys;
+    Document doc;
+    UndoStack undo;
+    std::optional<Settings> gestureStart;  // settings before the widget edit in progress
+    bool dirty = false;                    // as of the end of the last draw()
+
+    bool animateSun = false;               // UI state, not Settings: advances light.azimuth
+    float sunDegPerSecond = 10.0f;
+    TimingHistory timing;
+
+    bool showShadowMaps = true;
+    bool showSideView = true;
+    bool showHelp = false;
+    int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
+
+    std::string saveAsText;                // the "Save as" path field
+    std::string gltfText;                  // the scene's glTF path field
+    std::string gltfTextFor;               // the scene value gltfText was last synced from
+
+    PendingDiscard pending;
+    bool openConfirm = false;              // open the confirmation modal this frame
+    bool quitConfirmed = false;            // draw() returns quit
+
+    std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
+    ItemRects rects;
+};
+
+// One draw() call: the state, the settings being edited and what is reported back.
+struct UiFrame {
+    UiState& state;
+    Settings& s;
+    const UiInputs& in;
+    UiRequests& req;
+    bool edited = false;                   // a widget changed `s` this frame (an undo gesture)
+    bool replaced = false;                 // undo/redo/load replaced `s` wholesale this frame
+};
+
+}  // namespace st::ui
