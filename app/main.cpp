@@ -7,6 +7,7 @@ int main(int argc, char** argv) {
     int exitCode = 0;
     st::app::addRenderCommand(cli, exitCode);
     st::app::addEditorCommand(cli, exitCode);
+    st::app::addMeasureCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

@@ -12,6 +12,7 @@ packages=(
   libembree-dev
   libgtest-dev googletest
   xvfb xauth
+  clang-14 libclang-rt-14-dev llvm-14
 )
 
 missing=()

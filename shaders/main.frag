@@ -23,13 +23,12 @@ const vec3 kTints[ST_MAX_CASCADES] = vec3[](
     vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 1.0, 0.2),
     vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0), vec3(1.0, 0.6, 0.1), vec3(0.6, 0.3, 1.0));
 
-// Screen pixels covered by one shadow texel: the inverse of the texel area one pixel spans,
-// |det d(texel)/d(screen)|. Heat map on log2: blue (1/16) .. green (1) .. red (16).
+// Screen pixels covered by one shadow texel, by the formula the metrics report
+// (shadow_sampling.glsl). Heat map on log2: blue (1/16) .. green (1) .. red (16).
 vec3 texelDensityColor(vec3 wsPos, int cascade) {
-    vec2 t = (uShadowMatrix[max(cascade, 0)] * vec4(wsPos, 1.0)).xy * uMapSize;
-    float texelsPerPixel = abs(determinant(mat2(dFdx(t), dFdy(t))));
+    float pixelsPerTexel = screenPixelsPerTexel(texelJacobian(max(cascade, 0), dFdx(wsPos), dFdy(wsPos)));
     if (cascade < 0) return vec3(0.5);
-    float v = clamp(log2(1.0 / max(texelsPerPixel, 1e-8)) / 4.0, -1.0, 1.0);
+    float v = clamp(log2(pixelsPerTexel) / 4.0, -1.0, 1.0);
     return v < 0.0 ? mix(vec3(0.0, 0.8, 0.1), vec3(0.1, 0.2, 1.0), -v) : mix(vec3(0.0, 0.8, 0.1), vec3(1.0, 0.1, 0.0), v);
 }
 

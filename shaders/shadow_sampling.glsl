@@ -28,6 +28,19 @@ vec3 shadowCoord(int i, vec3 wsPos, vec3 wsNormal) {
     return (uShadowMatrix[i] * vec4(p, 1.0)).xyz;
 }
 
+// d(shadow texel)/d(screen pixel) of cascade i: the shadow matrix is affine, so the texel
+// derivatives are its linear part times the world-position derivatives. Taking those (not the
+// derivatives of the texel coordinate itself) keeps pixels whose 2x2 quad straddles two cascades
+// on their own cascade's figures.
+mat2 texelJacobian(int i, vec3 wsDx, vec3 wsDy) {
+    mat3 m = mat3(uShadowMatrix[i]) * uMapSize;
+    return mat2((m * wsDx).xy, (m * wsDy).xy);
+}
+
+// Screen pixels covered by one shadow texel (DESIGN.md "Aliasing / texel density"): the inverse
+// of the texel area one pixel spans, 1 / |det J|.
+float screenPixelsPerTexel(mat2 j) { return 1.0 / max(abs(determinant(j)), 1e-12); }
+
 // Interval-based selection (seed 000, seed 004): the slice the view depth falls in.
 int selectInterval(float vsDepth) {
     for (int i = 0; i < uCascadeCount; ++i)
@@ -62,9 +75,27 @@ vec2 receiverPlaneSlope(vec3 ts) {
     return transpose(inverse(j)) * vec2(dx.z, dy.z);
 }
 
-float sampleCascade(int i, vec3 ts, vec2 dzduv, float tanTheta) {
+// tan of the angle between the normal and the sun, kept finite: the slope-scaled bias grows with it.
+float tanToLight(float nDotL) {
+    float cosT = clamp(nDotL, 1e-3, 1.0);
+    return min(sqrt(1.0 - cosT * cosT) / cosT, 10.0);
+}
+
+// Constant + slope-scaled bias, turned from metres into cascade i's depth units.
+float biasedDepth(int i, float tsZ, float tanTheta) {
     float biasMetres = uBiasConstant + uBiasSlope * uTexelWorld[i] * tanTheta;
-    float z = min(ts.z - biasMetres / uDepthRange[i], 1.0);
+    return min(tsZ - biasMetres / uDepthRange[i], 1.0);
+}
+
+// The unfiltered test: one nearest-texel compare with the bias, whatever the filter setting.
+// The accuracy metrics score this against the ray-cast ground truth (DESIGN.md
+// "Misclassification").
+float hardShadow(int i, vec3 ts, float tanTheta) {
+    return texture(uShadowNearest, vec4(ts.xy, float(i), biasedDepth(i, ts.z, tanTheta)));
+}
+
+float sampleCascade(int i, vec3 ts, vec2 dzduv, float tanTheta) {
+    float z = biasedDepth(i, ts.z, tanTheta);
     if (uFilter == ST_FILTER_HARD) return texture(uShadowNearest, vec4(ts.xy, float(i), z));
     if (uFilter == ST_FILTER_PCF2X2) return texture(uShadowLinear, vec4(ts.xy, float(i), z));
     int r = uFilterSize / 2;
@@ -102,8 +133,7 @@ ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth)
     vec2 slope = receiverPlaneSlope(ts);
     vec2 slopeNext = receiverPlaneSlope(tsNext);
     if (c < 0) return ShadowResult(1.0, -1);
-    float cosT = clamp(nDotL, 1e-3, 1.0);
-    float tanTheta = min(sqrt(1.0 - cosT * cosT) / cosT, 10.0);
+    float tanTheta = tanToLight(nDotL);
     float f = sampleCascade(c, ts, slope, tanTheta);
     float w = blendWeight(c, vsDepth, ts);
     if (w > 0.0) f = mix(f, sampleCascade(cn, tsNext, slopeNext, tanTheta), w);

@@ -165,12 +165,24 @@ std::vector<FieldInfo> outputRows() {
     };
 }
 
+std::vector<FieldInfo> pathRows() {
+    return {
+        {.path = "path.frames", .label = "Path frames",
+         .help = "Frames the cascade camera takes along the path while the observer stays; 0 = no path.",
+         .unit = "frames", .kind = K::Int, .min = 0, .max = 10000, .step = 1, .change = C::None,
+         ST_FIELD_ACCESS(path.frames)},
+        {.path = "path.keyframes", .label = "Path keyframes",
+         .help = "Poses (position, target, fovY) the cascade camera passes through, to measure flicker.",
+         .kind = K::KeyframeList, .change = C::None, ST_FIELD_ACCESS(path.keyframes)},
+    };
+}
+
 #undef ST_FIELD_ACCESS
 
 std::vector<FieldInfo> buildTable() {
     std::vector<FieldInfo> table;
     for (auto&& rows : {sceneAndCameraRows(), lightRows(), cascadeSplitRows(), cascadeFitRows(),
-                        filterAndBiasRows(), outputRows()}) {
+                        filterAndBiasRows(), outputRows(), pathRows()}) {
         table.insert(table.end(), rows.begin(), rows.end());
     }
     return table;
@@ -223,6 +235,7 @@ std::string_view fieldKindName(FieldKind kind) {
         case FieldKind::String: return "string";
         case FieldKind::Vec3: return "vec3";
         case FieldKind::FloatList: return "float list";
+        case FieldKind::KeyframeList: return "keyframe list";
     }
     return "<invalid>";
 }

@@ -15,7 +15,7 @@
 
 namespace st {
 
-enum class FieldKind { Float, Int, Bool, Enum, String, Vec3, FloatList };
+enum class FieldKind { Float, Int, Bool, Enum, String, Vec3, FloatList, KeyframeList };
 
 // What the renderer must redo when a field changes, cheapest first. Each class includes the work
 // of the ones before it, so the cost of several changes is the maximum of their classes.
@@ -28,8 +28,10 @@ enum class ChangeClass {
 };
 
 // A field's value, by kind: Float -> float, Int -> int, Bool -> bool, Enum -> int (index into
-// FieldInfo::enumNames), String -> std::string, Vec3 -> glm::vec3, FloatList -> vector<float>.
-using FieldValue = std::variant<float, int, bool, std::string, glm::vec3, std::vector<float>>;
+// FieldInfo::enumNames), String -> std::string, Vec3 -> glm::vec3, FloatList -> vector<float>,
+// KeyframeList -> vector<CameraKeyframe> (each element follows camera.position/target/fovY's rules).
+using FieldValue = std::variant<float, int, bool, std::string, glm::vec3, std::vector<float>,
+                                std::vector<CameraKeyframe>>;
 
 struct FieldInfo {
     std::string_view path;   // JSON path, dot separated: "cascades.count"

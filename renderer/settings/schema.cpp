@@ -5,6 +5,7 @@
 #include "renderer/settings/validation.h"
 
 #include <cstdint>
+#include <utility>
 
 namespace st {
 namespace {
@@ -31,6 +32,24 @@ OJson intSchema(const FieldInfo& field) {
     return OJson{{"type", "integer"}, {"enum", values}};
 }
 
+OJson typeSchema(const FieldInfo& field);
+
+// An object per keyframe; its members take the schemas of the camera fields of the same name.
+OJson keyframeListSchema() {
+    const std::pair<const char*, const char*> members[] = {
+        {"position", "Cascade camera position at this keyframe. Unit: m."},
+        {"target", "Point the cascade camera looks at. Unit: m."},
+        {"fovY", "Vertical field of view at this keyframe (default 60). Unit: deg."}};
+    OJson item = objectSchema();
+    for (const auto& [key, description] : members) {
+        OJson member{{"description", description}};
+        member.update(typeSchema(*findField(std::string("camera.") + key)));
+        item["properties"][key] = std::move(member);
+    }
+    item["required"] = OJson::array({"position", "target"});
+    return OJson{{"type", "array"}, {"items", std::move(item)}};
+}
+
 OJson typeSchema(const FieldInfo& field) {
     switch (field.kind) {
         case FieldKind::Float: return numberSchema(field);
@@ -46,6 +65,7 @@ OJson typeSchema(const FieldInfo& field) {
         case FieldKind::Vec3:
             return OJson{{"type", "array"}, {"items", numberSchema(field)}, {"minItems", 3}, {"maxItems", 3}};
         case FieldKind::FloatList: return OJson{{"type", "array"}, {"items", numberSchema(field)}};
+        case FieldKind::KeyframeList: return keyframeListSchema();
     }
     return OJson::object();
 }

@@ -80,6 +80,23 @@ struct OutputSettings {
     bool operator==(const OutputSettings&) const = default;
 };
 
+// One pose of a camera path. Its fields follow the rules of camera.position/target/fovY.
+struct CameraKeyframe {
+    glm::vec3 position{0.0f, 1.7f, 10.0f};  // ws, metres
+    glm::vec3 target{0.0f, 1.0f, 0.0f};     // ws, metres
+    float fovY = 60.0f;                      // degrees, vertical
+    bool operator==(const CameraKeyframe&) const = default;
+};
+
+// A camera path for the flicker measurement (DESIGN.md "Stability (flicker)"): the *cascade
+// camera* moves through the keyframes (linearly, evenly over `frames` frames) and drives the
+// cascades, while the preset's `camera` stays put as the observer that sees the shadows.
+struct PathSettings {
+    int frames = 0;                        // 0 = no path
+    std::vector<CameraKeyframe> keyframes;  // at least one when frames > 0
+    bool operator==(const PathSettings&) const = default;
+};
+
 struct Settings {
     std::string scene = "builtin:yard";  // "builtin:NAME" or a glTF path relative to the preset
     std::string notes;                   // free text: what of the source system is not reproduced
@@ -89,6 +106,7 @@ struct Settings {
     FilterSettings filter;
     BiasSettings bias;
     OutputSettings output;
+    PathSettings path;
     bool operator==(const Settings&) const = default;
 };
 

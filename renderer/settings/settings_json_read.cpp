@@ -129,22 +129,78 @@ std::optional<int> readEnum(const FieldInfo& field, const Json& value, const std
     return index;
 }
 
-std::optional<std::vector<float>> readFloats(const FieldInfo& field, const Json& value, Issues& issues) {
+// `path` names the value in messages: the field's path, or a keyframe member's.
+std::optional<std::vector<float>> readFloats(const FieldInfo& field, const Json& value, const std::string& path,
+                                             Issues& issues) {
     const bool isVec3 = field.kind == FieldKind::Vec3;
     if (!value.is_array() || (isVec3 && value.size() != 3)) {
-        issues.push_back({std::string(field.path),
-                          (isVec3 ? "expected an array of 3 numbers, got " : "expected an array of numbers, got ") +
-                              describe(value)});
+        issues.push_back({path, (isVec3 ? "expected an array of 3 numbers, got " : "expected an array of numbers, got ") +
+                                    describe(value)});
         return std::nullopt;
     }
     std::vector<float> floats;
     const std::size_t before = issues.size();
     for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string path = std::string(field.path) + "[" + std::to_string(i) + "]";
-        floats.push_back(readFloat(field, value[i], path, issues).value_or(0.0f));
+        floats.push_back(readFloat(field, value[i], path + "[" + std::to_string(i) + "]", issues).value_or(0.0f));
     }
     if (issues.size() != before) return std::nullopt;
     return floats;
+}
+
+std::optional<glm::vec3> readVec3(const FieldInfo& field, const Json& value, const std::string& path, Issues& issues) {
+    const auto floats = readFloats(field, value, path, issues);
+    if (!floats) return std::nullopt;
+    return glm::vec3((*floats)[0], (*floats)[1], (*floats)[2]);
+}
+
+// A required point member of a keyframe, checked like camera.<key>.
+std::optional<glm::vec3> readPoint(const Json& keyframe, const std::string& key, const std::string& path,
+                                   Issues& issues) {
+    const auto it = keyframe.find(key);
+    if (it == keyframe.end()) {
+        issues.push_back({path + "." + key, "missing; every keyframe needs a position and a target"});
+        return std::nullopt;
+    }
+    return readVec3(*findField("camera." + key), *it, path + "." + key, issues);
+}
+
+// One {"position": [x,y,z], "target": [x,y,z], "fovY": deg} object; position and target are
+// required (a pose without them is a typo, not a default), fovY defaults to CameraKeyframe{}'s.
+// Each member is checked against the camera field of the same name.
+std::optional<CameraKeyframe> readKeyframe(const Json& value, const std::string& path, Issues& issues) {
+    if (!value.is_object()) {
+        issues.push_back({path, "expected an object {position, target, fovY}, got " + describe(value)});
+        return std::nullopt;
+    }
+    const std::size_t before = issues.size();
+    for (const auto& [key, member] : value.items()) {
+        if (key != "position" && key != "target" && key != "fovY")
+            issues.push_back({path + "." + key, "unknown key, expected one of: position, target, fovY"});
+    }
+    CameraKeyframe frame;
+    frame.position = readPoint(value, "position", path, issues).value_or(frame.position);
+    frame.target = readPoint(value, "target", path, issues).value_or(frame.target);
+    if (const auto it = value.find("fovY"); it != value.end())
+        frame.fovY = readFloat(*findField("camera.fovY"), *it, path + ".fovY", issues).value_or(frame.fovY);
+    if (issues.size() != before) return std::nullopt;
+    return frame;
+}
+
+std::optional<std::vector<CameraKeyframe>> readKeyframes(const FieldInfo& field, const Json& value, Issues& issues) {
+    const std::string path(field.path);
+    if (!value.is_array()) {
+        issues.push_back({path, "expected an array of keyframe objects, got " + describe(value)});
+        return std::nullopt;
+    }
+    std::vector<CameraKeyframe> frames;
+    bool ok = true;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const auto frame = readKeyframe(value[i], path + "[" + std::to_string(i) + "]", issues);
+        ok = ok && frame.has_value();
+        frames.push_back(frame.value_or(CameraKeyframe{}));
+    }
+    if (!ok) return std::nullopt;
+    return frames;
 }
 
 template <class T>
@@ -173,12 +229,9 @@ std::optional<FieldValue> readValue(const FieldInfo& field, const Json& value, I
         case FieldKind::Enum: return wrap(readEnum(field, value, path, issues));
         case FieldKind::Bool: return readBool(field, value, issues);
         case FieldKind::String: return readString(field, value, issues);
-        case FieldKind::FloatList: return wrap(readFloats(field, value, issues));
-        case FieldKind::Vec3: {
-            const auto floats = readFloats(field, value, issues);
-            if (!floats) return std::nullopt;
-            return FieldValue(glm::vec3((*floats)[0], (*floats)[1], (*floats)[2]));
-        }
+        case FieldKind::FloatList: return wrap(readFloats(field, value, path, issues));
+        case FieldKind::Vec3: return wrap(readVec3(field, value, path, issues));
+        case FieldKind::KeyframeList: return wrap(readKeyframes(field, value, issues));
     }
     return std::nullopt;
 }

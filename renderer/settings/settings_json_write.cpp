@@ -20,6 +20,16 @@ nlohmann::ordered_json floatArray(const float* values, std::size_t count) {
     return array;
 }
 
+nlohmann::ordered_json keyframesToJson(const std::vector<CameraKeyframe>& frames) {
+    auto array = nlohmann::ordered_json::array();
+    for (const CameraKeyframe& f : frames) {
+        array.push_back({{"position", floatArray(&f.position.x, 3)},
+                         {"target", floatArray(&f.target.x, 3)},
+                         {"fovY", tidyFloat(f.fovY)}});
+    }
+    return array;
+}
+
 // The object `path` ("cascades.count") lives in, created as needed; `leaf` gets "count".
 nlohmann::ordered_json& parentOf(nlohmann::ordered_json& root, std::string_view path, std::string& leaf) {
     nlohmann::ordered_json* node = &root;
@@ -54,6 +64,7 @@ nlohmann::ordered_json fieldValueToJson(const FieldInfo& field, const FieldValue
             const auto& list = std::get<std::vector<float>>(value);
             return floatArray(list.data(), list.size());
         }
+        case FieldKind::KeyframeList: return keyframesToJson(std::get<std::vector<CameraKeyframe>>(value));
     }
     return nullptr;
 }

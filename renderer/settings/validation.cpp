@@ -51,6 +51,24 @@ void checkElements(const FieldInfo& field, const float* values, std::size_t coun
     }
 }
 
+// Each keyframe member follows the rule of the camera field of the same name.
+void checkKeyframes(const std::vector<CameraKeyframe>& frames, std::vector<SettingsIssue>& out) {
+    const FieldInfo& position = *findField("camera.position");
+    const FieldInfo& target = *findField("camera.target");
+    const FieldInfo& fovY = *findField("camera.fovY");
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const std::string prefix = "path.keyframes[" + std::to_string(i) + "]";
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::string index = "[" + std::to_string(axis) + "]";
+            if (auto reason = checkNumber(position, frames[i].position[axis]))
+                out.push_back({prefix + ".position" + index, *reason});
+            if (auto reason = checkNumber(target, frames[i].target[axis]))
+                out.push_back({prefix + ".target" + index, *reason});
+        }
+        if (auto reason = checkNumber(fovY, frames[i].fovY)) out.push_back({prefix + ".fovY", *reason});
+    }
+}
+
 void checkField(const FieldInfo& field, const FieldValue& value, std::vector<SettingsIssue>& out) {
     std::optional<std::string> reason;
     switch (field.kind) {
@@ -73,6 +91,7 @@ void checkField(const FieldInfo& field, const FieldValue& value, std::vector<Set
             checkElements(field, list.data(), list.size(), out);
             break;
         }
+        case FieldKind::KeyframeList: checkKeyframes(std::get<std::vector<CameraKeyframe>>(value), out); break;
     }
     if (reason) out.push_back({std::string(field.path), *reason});
 }
@@ -131,6 +150,17 @@ void checkManualSplits(const Settings& s, std::vector<SettingsIssue>& out) {
     }
 }
 
+void checkPathKeyframes(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (s.path.frames > 0 && s.path.keyframes.empty())
+        out.push_back({"path.keyframes", "path.frames is " + std::to_string(s.path.frames) +
+                                             ", so the path needs at least one keyframe"});
+    for (std::size_t i = 0; i < s.path.keyframes.size(); ++i) {
+        if (s.path.keyframes[i].target != s.path.keyframes[i].position) continue;
+        out.push_back({"path.keyframes[" + std::to_string(i) + "].target",
+                       "must differ from its position, or the view direction is undefined"});
+    }
+}
+
 const std::vector<CrossRule>& crossRules() {
     static const std::vector<CrossRule> rules = {
         {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
@@ -143,6 +173,9 @@ const std::vector<CrossRule>& crossRules() {
          {"camera.nearPlane", "camera.farPlane", "cascades.shadowDistance", "cascades.count", "cascades.scheme",
           "cascades.manualSplits"},
          checkManualSplits},
+        {"path.frames > 0 needs at least one keyframe; each keyframe's target must differ from its position.",
+         {"path.frames", "path.keyframes"},
+         checkPathKeyframes},
     };
     return rules;
 }

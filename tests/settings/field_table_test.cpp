@@ -67,6 +67,7 @@ TEST(FieldTableTest, ValueAlternativeMatchesKind) {
             case FieldKind::String: return 3;
             case FieldKind::Vec3: return 4;
             case FieldKind::FloatList: return 5;
+            case FieldKind::KeyframeList: return 6;
         }
         return 99;
     };

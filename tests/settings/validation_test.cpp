@@ -78,7 +78,7 @@ TEST(ValidationTest, CheckNumberTakesDoublesBeforeNarrowing) {
 }
 
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 4u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 5u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 

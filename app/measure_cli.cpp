@@ -1,0 +1,68 @@
+// `shadowtune measure`: command-line options of the measurement command.
+#include "app/commands.h"
+#include "app/measure_command.h"
+
+#include <charconv>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <utility>
+
+namespace st::app {
+namespace {
+
+struct MeasureArgs {
+    MeasureCommandOptions opt;
+    std::string size;
+    bool noFlicker = false;
+};
+
+// "WxH" -> the number before and after the 'x', each 16..8192 (the rule of `render --size`).
+// Parsed by hand: <regex> trips GCC 12's -Wmaybe-uninitialized in sanitizer builds.
+std::optional<std::pair<int, int>> parseSize(const std::string& text) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) return std::nullopt;
+    int w = 0, h = 0;
+    const char* end = text.data() + text.size();
+    const auto [wEnd, wErr] = std::from_chars(text.data(), text.data() + x, w);
+    const auto [hEnd, hErr] = std::from_chars(text.data() + x + 1, end, h);
+    const bool whole = wErr == std::errc() && hErr == std::errc() && wEnd == text.data() + x && hEnd == end;
+    if (!whole || w < 16 || h < 16 || w > 8192 || h > 8192) return std::nullopt;
+    return std::pair{w, h};
+}
+
+bool applySize(MeasureArgs& a) {
+    if (a.size.empty()) return true;
+    const auto size = parseSize(a.size);
+    if (!size) {
+        std::fprintf(stderr, "error: --size: expected WxH with 16..8192 each, got '%s'\n", a.size.c_str());
+        return false;
+    }
+    a.opt.width = size->first;
+    a.opt.height = size->second;
+    return true;
+}
+
+}  // namespace
+
+void addMeasureCommand(CLI::App& cli, int& exitCode) {
+    auto args = std::make_shared<MeasureArgs>();
+    CLI::App* cmd = cli.add_subcommand(
+        "measure", "Measure presets against ray-cast ground truth: accuracy, texel density, flicker, cost");
+    cmd->add_option("presets", args->opt.presets, "Preset JSON files")->required();
+    cmd->add_option("--out", args->opt.outDir, "Output folder; each preset gets OUT/<name>/")->capture_default_str();
+    cmd->add_option("--size", args->size, "Override the output size, WxH (e.g. 1280x720)");
+    cmd->add_option("--frames", args->opt.costFrames, "Timed frames for the cost figures (after one warm-up)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    cmd->add_flag("--no-flicker", args->noFlicker, "Skip replaying the presets' camera paths");
+    cmd->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
+    cmd->callback([args, &exitCode] {
+        args->opt.flicker = !args->noFlicker;
+        exitCode = applySize(*args) ? runMeasure(args->opt) : 2;
+    });
+}
+
+}  // namespace st::app

@@ -1,0 +1,104 @@
+#include "app/measure_command.h"
+
+#include "metrics/measure_session.h"
+#include "metrics/metric_images.h"
+#include "metrics/metrics_json.h"
+#include "renderer/context/egl_context.h"
+#include "renderer/gpu/debug_output.h"
+#include "renderer/image/image_io.h"
+#include "renderer/settings/settings_json.h"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace st::app {
+namespace fs = std::filesystem;
+namespace {
+
+void makeDir(const fs::path& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw std::runtime_error(dir.string() + ": cannot create output folder: " + (ec ? ec.message() : "not a directory"));
+}
+
+void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
+    makeDir(dir);
+    writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
+    writeImageAtomic(dir / "errors.png", metrics::errorImage(m.accuracy, m.samples.width, m.samples.height));
+    writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
+    if (m.flicker) writeImageAtomic(dir / "flicker.png", metrics::flickerImage(m.flickerStdDev, m.samples));
+    writeTextAtomic(dir / "metrics.json", metrics::toJson(m, name).dump(2) + "\n");
+}
+
+std::string percent(double share) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f%%", 100.0 * share);
+    return text;
+}
+
+void printSummary(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
+    const metrics::ErrorCounts& a = m.accuracy.all;
+    std::printf("%s: %dx%d misclassified %s (false shadow %s, false light %s; gross %zu px), filtered error %.4f, "
+                "px/texel median %.2f p95 %.2f",
+                name.c_str(), m.samples.width, m.samples.height, percent(a.share(a.misclassified())).c_str(),
+                percent(a.share(a.falseShadow())).c_str(), percent(a.share(a.falseLight())).c_str(), a.gross(),
+                a.filteredError(), m.density.all.median, m.density.all.p95);
+    if (m.flicker) std::printf(", flicker F %s", percent(m.flicker->flipRate).c_str());
+    if (m.cost) std::printf(", GPU shadow %.1f ms main %.1f ms", m.cost->gpuShadowMs, m.cost->gpuMainMs);
+    std::printf(" | ground truth %.3f s, total %.2f s -> %s\n", m.timings.groundTruthMs / 1000.0,
+                m.timings.totalMs / 1000.0, dir.string().c_str());
+    std::fflush(stdout);
+}
+
+void measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metrics::MeasureSession& session) {
+    Settings s = loadPreset(preset);
+    if (opt.width) s.output.width = *opt.width;
+    if (opt.height) s.output.height = *opt.height;
+    const std::string name = preset.stem().string();
+    metrics::MeasureOptions mo;
+    mo.costFrames = opt.costFrames;
+    mo.flicker = opt.flicker;
+    mo.progress = [&name](const std::string& line) {
+        std::printf("  %s: %s\n", name.c_str(), line.c_str());
+        std::fflush(stdout);
+    };
+    const int before = gpu::seriousDebugMessageCount();
+    const metrics::PresetMeasurement m = session.measure(s, preset.parent_path(), mo);
+    if (opt.debugContext && gpu::seriousDebugMessageCount() > before)
+        throw std::runtime_error(preset.string() + ": GL debug output reported errors (see above)");
+    const fs::path dir = opt.outDir / name;
+    writeOutputs(m, name, dir);
+    printSummary(m, name, dir);
+}
+
+}  // namespace
+
+int runMeasure(const MeasureCommandOptions& opt) {
+    std::unique_ptr<HeadlessContext> ctx;
+    try {
+        makeDir(opt.outDir);
+        ctx = HeadlessContext::create(opt.debugContext);
+        if (opt.debugContext) gpu::enableDebugOutput();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+    }
+    metrics::MeasureSession session;
+    int failed = 0;
+    for (const fs::path& preset : opt.presets) {
+        try {
+            measureOne(opt, preset, session);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: %s\nskipped %s\n", e.what(), preset.string().c_str());
+            ++failed;
+        }
+    }
+    if (failed) std::fprintf(stderr, "%d of %zu presets failed\n", failed, opt.presets.size());
+    return failed ? 1 : 0;
+}
+
+}  // namespace st::app

@@ -1,0 +1,50 @@
+#include "metrics/cost.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace st::metrics {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    return *mid;
+}
+
+namespace {
+template <class Get>
+double medianOf(const std::vector<FrameStats>& frames, Get get) {
+    std::vector<double> values;
+    for (const FrameStats& f : frames) values.push_back(get(f));
+    return median(std::move(values));
+}
+}  // namespace
+
+CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vector<std::size_t>& covered, int mapSize) {
+    if (frames.empty()) throw std::invalid_argument("cost: no timed frames");
+    const FrameStats& last = frames.back();
+    CostReport r;
+    r.frames = int(frames.size());
+    r.gpuShadowMs = medianOf(frames, [](const FrameStats& f) { return f.gpuShadowMs; });
+    r.gpuMainMs = medianOf(frames, [](const FrameStats& f) { return f.gpuMainMs; });
+    r.cpuMs = medianOf(frames, [](const FrameStats& f) { return f.cpuMs; });
+    r.shadowMapBytes = last.shadowMapBytes;
+    r.sceneTriangles = last.sceneTriangles;
+    for (std::size_t i = 0; i < last.cascades.size(); ++i) {
+        CascadeCost c;
+        c.draws = last.cascades[i].casterDraws;
+        c.triangles = last.cascades[i].casterTriangles;
+        c.gpuMs = medianOf(frames, [i](const FrameStats& f) { return f.cascades[i].gpuMs; });
+        c.texels = std::size_t(mapSize) * std::size_t(mapSize);
+        c.texelsCovered = i < covered.size() ? covered[i] : 0;
+        r.draws += c.draws;
+        r.triangles += c.triangles;
+        r.texels += c.texels;
+        r.texelsCovered += c.texelsCovered;
+        r.cascades.push_back(c);
+    }
+    return r;
+}
+
+}  // namespace st::metrics

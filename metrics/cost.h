@@ -1,0 +1,41 @@
+#pragma once
+// Cost (DESIGN.md "Cost"): GPU time per pass (timer queries, median over frames after a
+// warm-up), CPU time, shadow-map memory, caster triangles and draw calls submitted per cascade,
+// and texels: every layer's mapSize^2 is cleared and rasterised into, of which casters cover
+// `texelsCovered`.
+#include "renderer/render/frame_stats.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace st::metrics {
+
+struct CascadeCost {
+    int draws = 0;
+    std::size_t triangles = 0;
+    double gpuMs = 0.0;  // median
+    std::size_t texels = 0;         // mapSize^2
+    std::size_t texelsCovered = 0;  // depth written below the clear value
+};
+
+struct CostReport {
+    int frames = 0;           // timed frames (after the warm-up frame)
+    double gpuShadowMs = 0.0; // medians
+    double gpuMainMs = 0.0;
+    double cpuMs = 0.0;
+    std::size_t shadowMapBytes = 0;
+    std::size_t sceneTriangles = 0;
+    std::size_t texels = 0;
+    std::size_t texelsCovered = 0;
+    int draws = 0;
+    std::size_t triangles = 0;  // caster triangles over all cascades
+    std::vector<CascadeCost> cascades;
+};
+
+double median(std::vector<double> values);  // 0 for none; the upper median for an even count
+
+// `frames`: the timed frames' statistics (not the warm-up), all of the same settings.
+// `covered`: texels written per cascade (coveredShadowTexels), `mapSize` texels per side.
+CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vector<std::size_t>& covered, int mapSize);
+
+}  // namespace st::metrics

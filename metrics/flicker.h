@@ -1,0 +1,59 @@
+#pragma once
+// Stability (DESIGN.md "Stability (flicker)"): along a camera path with a static scene and
+// light, the share of fixed world-space sample points whose shadow result changes between
+// consecutive frames. The observer camera stands still, so each of its pixels is one fixed world
+// point; only the cascade camera moves. The ground truth never changes there, so every change
+// is an artifact.
+#include "renderer/render/measure_samples.h"
+
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace st::metrics {
+
+struct FlickerReport {
+    int frames = 0;
+    std::size_t samplePoints = 0;   // observer pixels facing the sun
+    double flipRate = 0.0;          // F: mean over frame pairs of the share of points whose hard result flips
+    double maxFlipShare = 0.0;      // the worst frame pair's share
+    double flickeringShare = 0.0;   // share of points that flip at least once
+    double meanHardStdDev = 0.0;    // per-point temporal standard deviation of the hard result, mean
+    double maxHardStdDev = 0.0;
+    double meanFilteredStdDev = 0.0;  // the same for the filtered factor
+};
+
+class FlickerMeter {
+public:
+    // The sample points: the receivers of `first` (pixels with a surface facing the sun).
+    explicit FlickerMeter(const MeasureSamples& first);
+
+    // Every frame's MeasureSamples::shadow in path order, the first frame's included.
+    void add(const std::vector<glm::vec4>& shadow);
+    FlickerReport report() const;
+    std::vector<float> hardStdDev() const;  // per pixel (0 off the sample points)
+
+private:
+    struct Moments {
+        double sum = 0.0;
+        double sumSquares = 0.0;
+        void add(double v) {
+            sum += v;
+            sumSquares += v * v;
+        }
+        double stdDev(int n) const;
+    };
+
+    std::vector<std::uint8_t> points_;
+    std::size_t pointCount_ = 0;
+    std::vector<float> previous_;  // hard result of the last frame
+    std::vector<Moments> hard_;
+    std::vector<Moments> filtered_;
+    std::vector<std::uint8_t> flipped_;
+    std::vector<double> flipShares_;  // per consecutive pair
+    int frames_ = 0;
+};
+
+}  // namespace st::metrics

@@ -1,0 +1,118 @@
+#include "metrics/measure_session.h"
+
+#include "metrics/camera_path.h"
+#include "metrics/resolution_check.h"
+#include "renderer/csm/cascade_plan.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace st::metrics {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+void report(const MeasureOptions& opt, const std::string& line) {
+    if (opt.progress) opt.progress(line);
+}
+
+std::string seconds(double ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", ms / 1000.0);
+    return text;
+}
+
+}  // namespace
+
+glm::mat4 observerViewProj(const Settings& s) {
+    const csm::CameraParams cam = csm::cameraFromSettings(s.camera, float(s.output.width) / float(s.output.height));
+    return csm::projectionMatrix(cam) * csm::viewMatrix(cam);
+}
+
+MeasureSession::SceneEntry& MeasureSession::entryFor(const std::string& spec, const fs::path& presetDir) {
+    const std::string key = spec.rfind("builtin:", 0) == 0 ? spec : fs::weakly_canonical(presetDir / spec).string();
+    SceneEntry& e = scenes_[key];
+    if (!e.scene) {
+        e.scene = std::make_unique<Scene>(loadScene(spec, presetDir));
+        e.renderer = std::make_unique<Renderer>(*e.scene);
+    }
+    return e;
+}
+
+MeasurePass& MeasureSession::pass() {
+    if (!pass_) pass_ = std::make_unique<MeasurePass>();
+    return *pass_;
+}
+
+MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer) {
+    r.render(cascadeSettings);
+    return pass.run(r, cascadeSettings, observerViewProj(observer));
+}
+
+FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev) {
+    if (s.path.frames <= 0) return {};
+    const MeasureSamples first = sampleFrame(r, pass, atPathFrame(s, 0), s);  // fixes the sample points
+    FlickerMeter meter(first);
+    meter.add(first.shadow);
+    for (int frame = 1; frame < s.path.frames; ++frame) {
+        const Settings cascadeSettings = atPathFrame(s, frame);
+        r.render(cascadeSettings);
+        meter.add(pass.runShadowOnly(r, cascadeSettings, observerViewProj(s)));
+    }
+    if (stdDev) *stdDev = meter.hardStdDev();
+    return meter.report();
+}
+
+CostReport measureCost(Renderer& r, const Settings& s, int frames) {
+    r.render(s);  // warm-up: first-use allocations and shader variants
+    std::vector<std::size_t> covered = coveredShadowTexels(r.shadowMaps());
+    std::vector<FrameStats> timed;
+    for (int f = 0; f < frames; ++f) timed.push_back(r.render(s));
+    return summariseCost(timed, covered, s.cascades.mapSize);
+}
+
+// Truth, accuracy and texel density of the frame `s` shows: everything but cost and flicker.
+void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
+    auto t0 = Clock::now();
+    m.samples = sampleFrame(*e.renderer, pass, s, s);
+    m.timings.measurePassMs = msSince(t0);
+    t0 = Clock::now();
+    m.truth = e.truth->trace(m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
+    m.timings.groundTruthMs = msSince(t0);
+    const ResolutionCheck check(*e.truth, e.renderer->plan(), s.cascades.mapSize, s.camera.position);
+    m.accuracy = scoreAccuracy(m.samples, m.truth, s.cascades.count, [&](std::size_t i, bool mapLit) {
+        return check.explains(glm::vec3(m.samples.position[i]), glm::vec3(m.samples.geometry[i]),
+                              m.samples.cascade(i), mapLit);
+    });
+    m.density = texelDensity(m.samples, s.cascades.count);
+}
+
+PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& presetDir, const MeasureOptions& opt) {
+    const auto start = Clock::now();
+    PresetMeasurement m;
+    m.settings = s;
+    SceneEntry& e = entryFor(s.scene, presetDir);
+    if (!e.truth) {
+        e.truth = std::make_unique<GroundTruth>(*e.scene);
+        m.timings.bvhMs = e.truth->buildMs();
+    }
+    measureStill(e, pass(), s, m);
+    report(opt, "ground truth " + seconds(m.timings.groundTruthMs) + " (BVH " + seconds(m.timings.bvhMs) + ")");
+    if (opt.cost) {
+        const auto t0 = Clock::now();
+        m.cost = measureCost(*e.renderer, s, opt.costFrames);
+        m.timings.costMs = msSince(t0);
+    }
+    if (opt.flicker && s.path.frames > 0) {
+        const auto t0 = Clock::now();
+        m.flicker = measureFlicker(*e.renderer, pass(), s, &m.flickerStdDev);
+        m.timings.flickerMs = msSince(t0);
+        report(opt, "flicker over " + std::to_string(s.path.frames) + " frames " + seconds(m.timings.flickerMs));
+    }
+    m.timings.totalMs = msSince(start);
+    return m;
+}
+
+}  // namespace st::metrics

@@ -1,0 +1,91 @@
+#pragma once
+// Measures one preset end to end (DESIGN.md "How the product is measured"): renders it, reads
+// back the measurement pass, casts the ground truth, scores accuracy and texel density, times
+// the passes, and replays the camera path for flicker. Needs a current GL 4.5 context. Scenes,
+// their renderers and BVHs are kept per scene, so presets of one scene share them.
+#include "metrics/accuracy.h"
+#include "metrics/cost.h"
+#include "metrics/flicker.h"
+#include "metrics/ground_truth.h"
+#include "metrics/texel_density.h"
+#include "renderer/render/measure_pass.h"
+#include "renderer/render/renderer.h"
+#include "renderer/scene/scene.h"
+#include "renderer/settings/settings.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace st::metrics {
+
+struct MeasureTimings {  // wall-clock milliseconds
+    double bvhMs = 0.0;          // BVH build (once per scene; 0 when it was cached)
+    double groundTruthMs = 0.0;  // rays for every pixel
+    double measurePassMs = 0.0;  // render + measurement pass + read-back
+    double costMs = 0.0;
+    double flickerMs = 0.0;
+    double totalMs = 0.0;
+};
+
+struct PresetMeasurement {
+    Settings settings;
+    MeasureSamples samples;
+    std::vector<std::uint8_t> truth;  // 1 lit, 0 shadowed, per pixel
+    AccuracyReport accuracy;
+    DensityReport density;
+    std::optional<FlickerReport> flicker;  // when the preset has a path
+    std::vector<float> flickerStdDev;      // per pixel, with flicker
+    std::optional<CostReport> cost;
+    MeasureTimings timings;
+};
+
+struct MeasureOptions {
+    bool cost = true;
+    int costFrames = 5;   // timed frames, after one warm-up frame
+    bool flicker = true;  // replay s.path when it has frames
+    std::function<void(const std::string&)> progress;  // one line per stage, if set
+};
+
+// The observer's world -> clip matrix: the preset camera at the output's aspect.
+glm::mat4 observerViewProj(const Settings& s);
+
+class MeasureSession {
+public:
+    // Measures `s`; relative glTF scene paths are resolved against presetDir. Throws
+    // SceneError, std::invalid_argument (settings the cascade math rejects) or std::runtime_error.
+    PresetMeasurement measure(const Settings& s, const std::filesystem::path& presetDir, const MeasureOptions& opt = {});
+
+    // The scene, renderer and BVH for a scene spec, created on first use.
+    struct SceneEntry {
+        std::unique_ptr<Scene> scene;
+        std::unique_ptr<Renderer> renderer;
+        std::unique_ptr<GroundTruth> truth;
+    };
+    SceneEntry& entryFor(const std::string& spec, const std::filesystem::path& presetDir);
+    MeasurePass& pass();
+
+private:
+    std::map<std::string, SceneEntry> scenes_;
+    std::unique_ptr<MeasurePass> pass_;
+};
+
+// The per-frame pieces, for tests and tools that need only one figure.
+// Renders `cascadeSettings` (its camera drives the cascades) and reads back what the observer
+// of `observer` sees.
+MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer);
+// Flicker of s.path seen by s.camera; `stdDev` receives the per-pixel hard standard deviation.
+FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev = nullptr);
+CostReport measureCost(Renderer& r, const Settings& s, int frames);
+// Truth, accuracy and texel density of the frame `s` shows into `m` (the still part of
+// MeasureSession::measure; the entry's BVH must exist).
+void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m);
+
+}  // namespace st::metrics

@@ -1,0 +1,30 @@
+#pragma once
+// The images beside metrics.json, one colour per meaning (top row first, RGBA8).
+#include "metrics/accuracy.h"
+#include "renderer/image/image_io.h"
+#include "renderer/render/measure_samples.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace st::metrics {
+
+// Ground truth: lit white, shadowed dark grey, facing away from the sun darker blue-grey,
+// no surface slate.
+Rgba8Image truthImage(const MeasureSamples& s, const std::vector<std::uint8_t>& truth);
+
+// Errors of the unfiltered test: false shadow (acne) in reds, false light (leaks, missing
+// casters) in blues; pale inside the edge band (expected aliasing), saturated outside it (gross).
+// Correct pixels in greys (lit light, shadow mid), facing away dark, the terminator band of
+// smooth meshes dark purple, no surface slate.
+Rgba8Image errorImage(const AccuracyReport& a, int width, int height);
+
+// Screen pixels per texel on log2, the texel-density view's ramp: blue (1/16) .. green (1) ..
+// red (16); grey beyond the shadow range.
+Rgba8Image densityImage(const MeasureSamples& s);
+
+// Per-pixel temporal standard deviation of the hard result along the path: dark grey (steady)
+// to yellow (0.5: as often lit as shadowed).
+Rgba8Image flickerImage(const std::vector<float>& stdDev, const MeasureSamples& s);
+
+}  // namespace st::metrics

@@ -1,0 +1,94 @@
+#include "metrics/metrics_json.h"
+
+namespace st::metrics {
+namespace {
+using OJson = nlohmann::ordered_json;
+
+OJson errorJson(const ErrorCounts& e) {
+    return OJson{
+        {"receivers", e.receivers},
+        {"misclassified", e.share(e.misclassified())},
+        {"falseShadow", e.share(e.falseShadow())},
+        {"falseLight", e.share(e.falseLight())},
+        {"edge", {{"falseShadow", e.share(e.falseShadowEdge)}, {"falseLight", e.share(e.falseLightEdge)}}},
+        {"gross", {{"falseShadow", e.share(e.falseShadowGross)}, {"falseLight", e.share(e.falseLightGross)}}},
+        {"grossPixels", e.gross()},
+        {"filteredError", e.filteredError()},
+        {"pixels",
+         {{"falseShadowEdge", e.falseShadowEdge}, {"falseShadowGross", e.falseShadowGross},
+          {"falseLightEdge", e.falseLightEdge}, {"falseLightGross", e.falseLightGross}}},
+    };
+}
+
+OJson accuracyJson(const AccuracyReport& a) {
+    OJson j = errorJson(a.all);
+    j["coveredPixels"] = a.covered;
+    j["facingAwayPixels"] = a.facingAway;
+    j["terminatorPixels"] = a.terminator;
+    j["truthEdgePixels"] = a.edgePixels;
+    j["beyondShadowRange"] = errorJson(a.beyond);
+    j["cascades"] = OJson::array();
+    for (const ErrorCounts& c : a.cascades) j["cascades"].push_back(errorJson(c));
+    return j;
+}
+
+OJson densityJson(const DensityStats& d) {
+    return OJson{{"pixels", d.pixels},   {"median", d.median},
+                 {"p90", d.p90},         {"p95", d.p95},
+                 {"max", d.max},         {"aliasingShare", d.aliasingShare},
+                 {"wastedShare", d.wastedShare}};
+}
+
+OJson texelDensityJson(const DensityReport& r) {
+    OJson j = densityJson(r.all);
+    j["cascades"] = OJson::array();
+    for (const DensityStats& c : r.cascades) j["cascades"].push_back(densityJson(c));
+    return j;
+}
+
+OJson flickerJson(const FlickerReport& f) {
+    return OJson{{"frames", f.frames},
+                 {"samplePoints", f.samplePoints},
+                 {"flipRate", f.flipRate},
+                 {"maxFlipShare", f.maxFlipShare},
+                 {"flickeringShare", f.flickeringShare},
+                 {"meanHardStdDev", f.meanHardStdDev},
+                 {"maxHardStdDev", f.maxHardStdDev},
+                 {"meanFilteredStdDev", f.meanFilteredStdDev}};
+}
+
+OJson costJson(const CostReport& c) {
+    OJson j{{"timedFrames", c.frames},         {"gpuShadowMs", c.gpuShadowMs},   {"gpuMainMs", c.gpuMainMs},
+            {"cpuMs", c.cpuMs},                {"shadowMapBytes", c.shadowMapBytes}, {"sceneTriangles", c.sceneTriangles},
+            {"draws", c.draws},                {"casterTriangles", c.triangles}, {"texels", c.texels},
+            {"texelsCovered", c.texelsCovered}, {"cascades", OJson::array()}};
+    for (const CascadeCost& k : c.cascades) {
+        j["cascades"].push_back(OJson{{"draws", k.draws}, {"casterTriangles", k.triangles}, {"gpuMs", k.gpuMs},
+                                      {"texels", k.texels}, {"texelsCovered", k.texelsCovered}});
+    }
+    return j;
+}
+
+OJson timingsJson(const MeasureTimings& t) {
+    return OJson{{"bvhMs", t.bvhMs},         {"groundTruthMs", t.groundTruthMs}, {"measurePassMs", t.measurePassMs},
+                 {"costMs", t.costMs},       {"flickerMs", t.flickerMs},         {"totalMs", t.totalMs}};
+}
+
+}  // namespace
+
+OJson toJson(const PresetMeasurement& m, const std::string& presetName) {
+    OJson j{{"preset", presetName},
+            {"scene", m.settings.scene},
+            {"width", m.samples.width},
+            {"height", m.samples.height},
+            {"cascades", m.settings.cascades.count},
+            {"mapSize", m.settings.cascades.mapSize},
+            {"accuracy", accuracyJson(m.accuracy)},
+            {"texelDensity", texelDensityJson(m.density)},
+            {"flicker", m.flicker ? flickerJson(*m.flicker) : OJson(nullptr)},
+            {"cost", m.cost ? costJson(*m.cost) : OJson(nullptr)},
+            {"timings", timingsJson(m.timings)}};
+    return j;
+}
+
+}  // namespace st::metrics

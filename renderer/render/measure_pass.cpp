@@ -1,0 +1,108 @@
+#include "renderer/render/measure_pass.h"
+
+#include "renderer/render/shader_library.h"
+#include "renderer/render/shadow_uniforms.h"
+#include "shaders/limits.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace st {
+namespace {
+GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+}  // namespace
+
+MeasurePass::MeasurePass() {
+    program_ = gpu::linkProgram(shaderSource("main.vert"), shaderSource("measure.frag"), "measure");
+}
+
+void MeasurePass::ensureTargets(int width, int height) {
+    if (fbo_ && width == width_ && height == height_) return;
+    if (!fbo_) fbo_ = gpu::createFramebuffer();
+    for (int i = 0; i < 4; ++i) {
+        targets_[i] = gpu::createTexture(GL_TEXTURE_2D);
+        glTextureStorage2D(targets_[i].id(), 1, GL_RGBA32F, width, height);
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0 + i, targets_[i].id(), 0);
+    }
+    depth_ = gpu::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                               GL_COLOR_ATTACHMENT3};
+    glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
+    width_ = width;
+    height_ = height;
+}
+
+// The main pass's state (depth test, back-face culling per material) so coverage is the same.
+void MeasurePass::draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) const {
+    GLuint p = program_.id();
+    const csm::CascadePlan& plan = r.plan();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glUseProgram(p);
+    glm::vec3 toSun = -plan.wsLightDir;
+    glProgramUniformMatrix4fv(p, loc(p, "uView"), 1, GL_FALSE, glm::value_ptr(plan.vsView));
+    glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(observerViewProj));
+    glProgramUniform3fv(p, loc(p, "uWsToSun"), 1, glm::value_ptr(toSun));
+    setShadowUniforms(p, s, plan);
+    r.shadowMaps().bindForSampling();
+    r.sceneGpu().bindGeometry();
+    glCullFace(GL_BACK);
+    for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(p, item, true);
+    glDisable(GL_CULL_FACE);
+    glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
+    glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+}
+
+std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture) const {
+    std::vector<glm::vec4> pixels(std::size_t(width_) * height_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(glm::vec4)),
+                      pixels.data());
+    // GL's first row is the bottom one; samples are stored top row first, like images.
+    const auto row = static_cast<std::ptrdiff_t>(width_);
+    for (int y = 0; y < height_ / 2; ++y)
+        std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
+                         pixels.begin() + (height_ - 1 - y) * row);
+    return pixels;
+}
+
+MeasureSamples MeasurePass::run(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) {
+    gpu::DebugGroup group("measure pass");
+    ensureTargets(s.output.width, s.output.height);
+    draw(r, s, observerViewProj);
+    return {width_, height_, read(targets_[0]), read(targets_[1]), read(targets_[2]), read(targets_[3])};
+}
+
+std::vector<glm::vec4> MeasurePass::runShadowOnly(const Renderer& r, const Settings& s,
+                                                  const glm::mat4& observerViewProj) {
+    gpu::DebugGroup group("measure pass (shadow only)");
+    ensureTargets(s.output.width, s.output.height);
+    draw(r, s, observerViewProj);
+    return read(targets_[2]);
+}
+
+std::vector<std::size_t> coveredShadowTexels(const ShadowMaps& maps) {
+    const int size = maps.size();
+    std::vector<float> depth(std::size_t(size) * size);
+    std::vector<std::size_t> covered;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int layer = 0; layer < maps.layers(); ++layer) {
+        glGetTextureSubImage(maps.texture(), 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                             static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+        covered.push_back(static_cast<std::size_t>(
+            std::count_if(depth.begin(), depth.end(), [](float d) { return d < 1.0f; })));
+    }
+    return covered;
+}
+
+}  // namespace st

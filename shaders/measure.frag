@@ -1,0 +1,52 @@
+#version 450 core
+// Per-pixel inputs of the metrics (DESIGN.md "How the product is measured"), as floats. Drawn
+// with main.vert and the main pass's coverage rules (alpha test, culling), so every figure
+// belongs to a pixel the shaded image shows. Targets:
+//   0: ws position, w = 1 (the clear value 0 marks pixels with no surface)
+//   1: ws shading normal, facing the viewer as main.frag lights it; w = N.L
+//   2: x unfiltered test (one nearest compare in the selected cascade with the preset's bias,
+//      no blend band), y filtered factor (the preset's filter and blend band, as main.frag
+//      shades), z cascade (-1 beyond the shadow range), w screen pixels per texel
+//   3: the triangle's own (geometric) normal, on the viewer's side like the shading normal;
+//      w = its N.L. Smooth shading normals bend away from it, but rays and depth maps see it.
+#include "limits.h"
+#include "shadow_sampling.glsl"
+
+layout(binding = ST_BINDING_BASE_COLOR) uniform sampler2D uBaseColorTex;
+uniform vec4 uBaseColor;
+uniform bool uHasTexture;
+uniform bool uAlphaMask;
+uniform float uAlphaCutoff;
+uniform vec3 uWsToSun;  // unit vector toward the sun
+
+in vec3 vWsPosition;
+in vec3 vWsNormal;
+in vec2 vUv;
+in float vVsDepth;  // from the cascade camera: it drives interval selection
+layout(location = 0) out vec4 oPosition;
+layout(location = 1) out vec4 oNormal;
+layout(location = 2) out vec4 oShadow;
+layout(location = 3) out vec4 oGeometry;
+
+void main() {
+    // Before the discard, so the whole 2x2 quad still runs when they are taken.
+    vec3 wsDx = dFdx(vWsPosition);
+    vec3 wsDy = dFdy(vWsPosition);
+    vec4 base = uBaseColor;
+    if (uHasTexture) base *= texture(uBaseColorTex, vUv);
+    if (uAlphaMask && base.a < uAlphaCutoff) discard;
+    vec3 n = normalize(vWsNormal);
+    if (!gl_FrontFacing) n = -n;
+    float nDotL = dot(n, uWsToSun);
+    ShadowResult s = shadowFactor(vWsPosition, n, nDotL, vVsDepth);
+    int ci = max(s.cascade, 0);
+    float hard = hardShadow(ci, shadowCoord(ci, vWsPosition, n), tanToLight(nDotL));
+    mat2 j = texelJacobian(ci, wsDx, wsDy);
+    bool inRange = s.cascade >= 0;
+    oPosition = vec4(vWsPosition, 1.0);
+    oNormal = vec4(n, nDotL);
+    vec3 g = normalize(cross(wsDx, wsDy));  // the position's derivatives span the triangle's plane
+    if (dot(g, n) < 0.0) g = -g;
+    oGeometry = vec4(g, dot(g, uWsToSun));
+    oShadow = vec4(inRange ? hard : 1.0, s.factor, float(s.cascade), inRange ? screenPixelsPerTexel(j) : 0.0);
+}
