@@ -25,11 +25,12 @@ struct SceneCache {
     std::map<std::string, std::unique_ptr<Scene>> scenes;
     std::map<std::string, std::unique_ptr<Renderer>> renderers;
 
-    Renderer& rendererFor(const std::string& spec, const fs::path& baseDir) {
-        std::string key = spec.rfind("builtin:", 0) == 0 ? spec : fs::weakly_canonical(baseDir / spec).string();
+    Renderer& rendererFor(const Settings& s, const fs::path& baseDir) {
+        const SceneOptions options{.ground = s.ground};
+        const std::string key = sceneKey(s.scene, baseDir, options);
         auto it = renderers.find(key);
         if (it != renderers.end()) return *it->second;
-        scenes[key] = std::make_unique<Scene>(loadScene(spec, baseDir));
+        scenes[key] = std::make_unique<Scene>(loadScene(s.scene, baseDir, options));
         return *(renderers[key] = std::make_unique<Renderer>(*scenes[key]));
     }
 };
@@ -82,7 +83,7 @@ void renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache& cac
     if (opt.height) s.output.height = *opt.height;
     checkDeviceLimits(s, preset);
     int before = gpu::seriousDebugMessageCount();
-    Renderer& r = cache.rendererFor(s.scene, preset.parent_path());
+    Renderer& r = cache.rendererFor(s, preset.parent_path());
     FrameStats stats = r.render(s);
     if (opt.frames > 1) stats = benchmark(r, s, opt.frames, preset);
     Rgba8Image img{r.width(), r.height(), r.readRgba8()};

@@ -31,11 +31,11 @@ glm::mat4 observerViewProj(const Settings& s) {
     return csm::projectionMatrix(cam) * csm::viewMatrix(cam);
 }
 
-MeasureSession::SceneEntry& MeasureSession::entryFor(const std::string& spec, const fs::path& presetDir) {
-    const std::string key = spec.rfind("builtin:", 0) == 0 ? spec : fs::weakly_canonical(presetDir / spec).string();
-    SceneEntry& e = scenes_[key];
+MeasureSession::SceneEntry& MeasureSession::entryFor(const Settings& s, const fs::path& presetDir) {
+    const SceneOptions options{.ground = s.ground};
+    SceneEntry& e = scenes_[sceneKey(s.scene, presetDir, options)];
     if (!e.scene) {
-        e.scene = std::make_unique<Scene>(loadScene(spec, presetDir));
+        e.scene = std::make_unique<Scene>(loadScene(s.scene, presetDir, options));
         e.renderer = std::make_unique<Renderer>(*e.scene);
     }
     return e;
@@ -93,7 +93,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     const auto start = Clock::now();
     PresetMeasurement m;
     m.settings = s;
-    SceneEntry& e = entryFor(s.scene, presetDir);
+    SceneEntry& e = entryFor(s, presetDir);
     if (!e.truth) {
         e.truth = std::make_unique<GroundTruth>(*e.scene);
         m.timings.bvhMs = e.truth->buildMs();

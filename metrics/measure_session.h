@@ -69,7 +69,7 @@ public:
         std::unique_ptr<Renderer> renderer;
         std::unique_ptr<GroundTruth> truth;
     };
-    SceneEntry& entryFor(const std::string& spec, const std::filesystem::path& presetDir);
+    SceneEntry& entryFor(const Settings& s, const std::filesystem::path& presetDir);
     MeasurePass& pass();
 
 private:

@@ -151,6 +151,10 @@ GlbChunks splitGlb(const LoadContext& ctx, const std::vector<std::uint8_t>& byte
     if (readU32(bytes, 4) != 2) ctx.fail("is GLB version " + std::to_string(readU32(bytes, 4)) + "; only 2 is read");
     GlbChunks glb;
     glb.glbLength = readU32(bytes, 8);
+    // Checked first: every remaining-length below subtracts the 20-byte header from it.
+    if (glb.glbLength < 20) {
+        ctx.fail("GLB header declares " + std::to_string(glb.glbLength) + " bytes, less than its own 20-byte header");
+    }
     if (glb.glbLength > size) {
         ctx.fail("GLB header declares " + std::to_string(glb.glbLength) + " bytes but the file has only " +
                  std::to_string(size) + " (truncated)");

@@ -2,6 +2,7 @@
 // stb_image from Debian's libstb-dev compiled privately into this file (STB_IMAGE_STATIC), so the
 // size is read from the header and checked before any pixel memory is allocated.
 #include "renderer/scene/gltf_detail.h"
+#include "renderer/scene/jpeg_tables.h"
 
 #include <glm/vec2.hpp>
 
@@ -71,6 +72,8 @@ std::optional<glm::ivec2> checkedSize(LoadContext& ctx, const tinygltf::Image& i
     std::int64_t width = 0, height = 0;
     if (!image.as_is || image.image.empty() || image.image.size() > INT_MAX) {
         ctx.warn(label + " could not be read" + kFallback);
+    } else if (!jpegHuffmanTablesFit(image.image.data(), image.image.size())) {
+        ctx.warn(label + " is a corrupt JPEG (a Huffman table with more than 256 codes)" + kFallback);
     } else if (!imageSize(image.image, width, height)) {
         ctx.warn(label + " cannot be decoded (" + failureReason() + ")" + kFallback);
     } else if (const int maxSide = ctx.limits.maxImageDimension;

@@ -60,9 +60,21 @@ struct SceneError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What a preset adds to the scene it loads (Settings::ground).
+struct SceneOptions {
+    bool ground = false;  // a square quad at the lowest point, 4x the larger horizontal extent, centred
+    bool operator==(const SceneOptions&) const = default;
+};
+
 // "builtin:yard", "builtin:box-over-plane", "builtin:empty", or a .gltf/.glb path (relative paths
 // are resolved against baseDir, the preset's folder). Throws SceneError.
-Scene loadScene(const std::string& spec, const std::filesystem::path& baseDir);
+Scene loadScene(const std::string& spec, const std::filesystem::path& baseDir, const SceneOptions& options = {});
+
+// Equal for two (spec, baseDir, options) that load the same scene: a key for caches.
+std::string sceneKey(const std::string& spec, const std::filesystem::path& baseDir, const SceneOptions& options = {});
+
+// Appends the ground of SceneOptions under s's current bounds (recomputed after).
+void addGroundUnder(Scene& s);
 
 // Names accepted after "builtin:".
 std::vector<std::string> builtinSceneNames();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -69,6 +70,12 @@ std::string readText(const fs::path& file) {
     const auto status = fs::status(file, ec);
     if (!fs::exists(status)) throw SettingsError(name + ": cannot read preset: no such file");
     if (fs::is_directory(status)) throw SettingsError(name + ": cannot read preset: is a directory, not a JSON file");
+    // Presets are a few kilobytes; refusing huge files keeps a mistaken path from filling memory.
+    constexpr std::uintmax_t kMaxPresetBytes = 16u << 20;
+    if (const auto size = fs::file_size(file, ec); !ec && size > kMaxPresetBytes) {
+        throw SettingsError(name + ": cannot read preset: " + std::to_string(size) + " bytes, more than the " +
+                            std::to_string(kMaxPresetBytes >> 20) + " MiB a preset may have");
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SettingsError(name + ": cannot read preset: " + std::strerror(errno));
     std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

@@ -100,6 +100,7 @@ struct PathSettings {
 struct Settings {
     std::string scene = "builtin:yard";  // "builtin:NAME" or a glTF path relative to the preset
     std::string notes;                   // free text: what of the source system is not reproduced
+    bool ground = false;                 // a ground quad under a glTF scene that has none (SceneOptions)
     CameraSettings camera;
     LightSettings light;
     CascadeSettings cascades;

@@ -15,9 +15,29 @@ namespace {
 using Json = nlohmann::json;
 using Issues = std::vector<SettingsIssue>;
 
+// One level of a value, for messages: nested arrays and objects as [...] and {...}. Never recursive:
+// a hostile preset can nest thousands deep, and dump() would recurse that far (found by fuzzing:
+// tests/fuzz/crashes/preset/deep-nesting-describe-stack-overflow.json).
+std::string shallowText(const Json& value) {
+    if (value.is_array()) return value.empty() ? "[]" : "[...]";
+    if (value.is_object()) return value.empty() ? "{}" : "{...}";
+    return value.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+std::string containerText(const Json& value) {
+    const bool array = value.is_array();
+    std::string text = array ? "[" : "{";
+    for (auto it = value.begin(); it != value.end() && text.size() <= 40; ++it) {
+        if (text.size() > 1) text += ",";
+        if (!array) text += Json(it.key()).dump(-1, ' ', false, Json::error_handler_t::replace) + ":";
+        text += shallowText(it.value());
+    }
+    return text + (array ? "]" : "}");
+}
+
 // A JSON value for "got ..." in messages: its text, cut short, with its type where that helps.
 std::string describe(const Json& value) {
-    std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+    std::string text = value.is_structured() ? containerText(value) : shallowText(value);
     if (text.size() > 40) text = text.substr(0, 37) + "...";
     if (value.is_string()) return "string " + text;
     if (value.is_array()) return "array " + text;

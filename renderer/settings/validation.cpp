@@ -161,6 +161,12 @@ void checkPathKeyframes(const Settings& s, std::vector<SettingsIssue>& out) {
     }
 }
 
+void checkGround(const Settings& s, std::vector<SettingsIssue>& out) {
+    // A second quad at the built-in ground's height would z-fight with it.
+    if (s.ground && s.scene.starts_with("builtin:"))
+        out.push_back({"ground", "must be false for " + s.scene + ", which has its own ground"});
+}
+
 const std::vector<CrossRule>& crossRules() {
     static const std::vector<CrossRule> rules = {
         {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
@@ -176,6 +182,7 @@ const std::vector<CrossRule>& crossRules() {
         {"path.frames > 0 needs at least one keyframe; each keyframe's target must differ from its position.",
          {"path.frames", "path.keyframes"},
          checkPathKeyframes},
+        {"ground is for glTF scenes; built-in scenes have their own.", {"scene", "ground"}, checkGround},
     };
     return rules;
 }

@@ -21,7 +21,7 @@ protected:
         return s;
     }
     metrics::FlickerReport flicker(const Settings& s) {
-        auto& e = session_.entryFor(s.scene, ST_PRESET_DIR);
+        auto& e = session_.entryFor(s, ST_PRESET_DIR);
         return metrics::measureFlicker(*e.renderer, session_.pass(), s);
     }
     metrics::MeasureSession session_;
@@ -57,7 +57,7 @@ TEST_F(FlickerGLTest, SphereWithoutSnappingStillFlickers) {
 TEST_F(FlickerGLTest, TheCascadeCameraMovesAndTheObserverDoesNot) {
     const Settings s = withSidewaysPath(test::presetAtTestSize("default"));
     EXPECT_NE(metrics::cameraOnPath(s, 7).position, s.camera.position);
-    auto& e = session_.entryFor(s.scene, ST_PRESET_DIR);
+    auto& e = session_.entryFor(s, ST_PRESET_DIR);
     const MeasureSamples first = metrics::sampleFrame(*e.renderer, session_.pass(), metrics::atPathFrame(s, 0), s);
     const MeasureSamples last = metrics::sampleFrame(*e.renderer, session_.pass(), metrics::atPathFrame(s, 7), s);
     EXPECT_EQ(first.position, last.position);  // the same world point behind every pixel

@@ -18,7 +18,7 @@ protected:
     // The main pass's image of `s` in `view`, and the measured samples of the same frame.
     std::pair<Rgba8Image, MeasureSamples> renderAndSample(Settings s, View view) {
         s.output.view = view;
-        auto& e = session_.entryFor(s.scene, ST_PRESET_DIR);
+        auto& e = session_.entryFor(s, ST_PRESET_DIR);
         MeasureSamples samples = metrics::sampleFrame(*e.renderer, session_.pass(), s, s);
         return {Rgba8Image{e.renderer->width(), e.renderer->height(), e.renderer->readRgba8()}, std::move(samples)};
     }
@@ -92,7 +92,7 @@ TEST_F(MeasurePassGLTest, CascadesFollowTheCascadeCameraNotTheObserver) {
     const glm::vec3 back = glm::normalize(observer.camera.position - observer.camera.target) * 60.0f;
     away.camera.position += back;
     away.camera.target += back;
-    auto& e = session_.entryFor(observer.scene, ST_PRESET_DIR);
+    auto& e = session_.entryFor(observer, ST_PRESET_DIR);
     const MeasureSamples same = metrics::sampleFrame(*e.renderer, session_.pass(), observer, observer);
     const MeasureSamples moved = metrics::sampleFrame(*e.renderer, session_.pass(), away, observer);
     EXPECT_EQ(same.position, moved.position);  // the observer sees the same points
@@ -104,7 +104,7 @@ TEST_F(MeasurePassGLTest, CascadesFollowTheCascadeCameraNotTheObserver) {
 
 TEST_F(MeasurePassGLTest, CoveredShadowTexelsAreCounted) {
     const Settings s = test::presetAtTestSize("box-over-plane");
-    auto& e = session_.entryFor(s.scene, ST_PRESET_DIR);
+    auto& e = session_.entryFor(s, ST_PRESET_DIR);
     e.renderer->render(s);
     const std::vector<std::size_t> covered = coveredShadowTexels(e.renderer->shadowMaps());
     ASSERT_EQ(covered.size(), 2u);

@@ -29,7 +29,7 @@ Rgba8Image renderPreset(const fs::path& preset) {
     Settings s = loadPreset(preset);
     s.output.width = kWidth;
     s.output.height = kHeight;
-    Scene scene = loadScene(s.scene, preset.parent_path());
+    Scene scene = loadScene(s.scene, preset.parent_path(), SceneOptions{.ground = s.ground});
     Renderer r(scene);
     r.render(s);
     return {r.width(), r.height(), r.readRgba8()};

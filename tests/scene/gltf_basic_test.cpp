@@ -50,6 +50,23 @@ TEST(GltfLoadTest, TriangleWithDataUri) {
     expectWindingMatchesNormals(s);
 }
 
+// Settings::ground: a quad under the lowest point, centred, 4x the larger horizontal extent,
+// facing up, as one extra draw with its own material; the scene bounds grow to hold it.
+TEST(GltfLoadTest, GroundOptionAddsAQuadUnderTheScene) {
+    TempDir dir;
+    const fs::path file = triangleBuilder().writeDataUri(dir / "tri.gltf");  // (0,0,0) (1,0,0) (0,1,0)
+    const Scene plain = loadScene(file.string(), dir.path());
+    const Scene s = loadScene(file.string(), dir.path(), SceneOptions{.ground = true});
+    ASSERT_EQ(s.draws.size(), plain.draws.size() + 1);
+    ASSERT_EQ(s.triangleCount(), plain.triangleCount() + 2);
+    EXPECT_EQ(s.draws.back().material, int(plain.materials.size()));
+    expectNear(s.draws.back().wsBounds.min, {0.5f - 2.0f, 0.0f, -2.0f});
+    expectNear(s.draws.back().wsBounds.max, {0.5f + 2.0f, 0.0f, 2.0f});
+    expectNear(s.wsBounds.max, {2.5f, 1.0f, 2.0f});
+    for (std::size_t t = plain.triangleCount(); t < s.triangleCount(); ++t) expectNear(geometricNormal(s, t), {0, 1, 0});
+    EXPECT_NE(sceneKey(file.string(), dir.path(), {.ground = true}), sceneKey(file.string(), dir.path()));
+}
+
 class GltfIndexTypeTest : public ::testing::TestWithParam<int> {};
 
 TEST_P(GltfIndexTypeTest, QuadReadsEveryIndexType) {

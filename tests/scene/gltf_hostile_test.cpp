@@ -122,6 +122,11 @@ TEST(GltfHostileTest, GlbChunkTable) {
     bad.resize(glb.size() - 4);  // BIN chunk cut, header length left as is
     writeBytes(file, bad);
     expectError(file, {"GLB header declares", "truncated"});
+    bad = glb;
+    bad[8] = 12;  // total length shorter than the header itself (wrapped around once: tests/fuzz/crashes)
+    bad[9] = bad[10] = bad[11] = 0;
+    writeBytes(file, bad);
+    expectError(file, {"GLB header declares 12 bytes, less than its own 20-byte header"});
 }
 
 TEST(GltfHostileTest, AccessorPastItsBufferView) {

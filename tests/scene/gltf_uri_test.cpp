@@ -124,6 +124,15 @@ TEST(GltfUriTest, UndecodableImageFallsBack) {
     expectImageFallback(b.writeDataUri(dir / "garbage.gltf"), "cannot be decoded");
 }
 
+// SOI, then a Huffman table whose 16 code counts (0x11 each) sum to 272: more than the 256 codes a
+// table holds. Debian's stb_image writes past its arrays on this (tests/fuzz/crashes/gltf).
+TEST(GltfUriTest, JpegWithOversizedHuffmanTableFallsBack) {
+    TempDir dir;
+    GltfBuilder b = triangleBuilder();
+    texture(b, {{"uri", "data:image/jpeg;base64,/9j/xAATABERERERERERERERERERERE="}});
+    expectImageFallback(b.writeDataUri(dir / "dht.gltf"), "corrupt JPEG (a Huffman table with more than 256 codes)");
+}
+
 TEST(GltfUriTest, UnsupportedDataUriImageFallsBack) {
     TempDir dir;
     GltfBuilder b = triangleBuilder();

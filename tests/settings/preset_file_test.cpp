@@ -47,7 +47,7 @@ TEST_F(PresetFileTest, SavedPresetLoadsBackEqual) {
 TEST_F(PresetFileTest, SavedTextIsPrettyAndInTableOrder) {
     savePresetAtomic(Settings{}, dir / "p.json");
     const std::string text = read(dir / "p.json");
-    EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"scene\": \"builtin:yard\",\n  \"notes\": \"\",\n  \"camera\": {\n"
+    EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"scene\": \"builtin:yard\",\n  \"notes\": \"\",\n  \"ground\": false,\n  \"camera\": {\n"
                          "    \"position\": [\n",
                          0),
               0u)
@@ -95,6 +95,21 @@ TEST_F(PresetFileTest, NumberOverflowIsInvalidJsonWithAPosition) {
 TEST_F(PresetFileTest, NaNLiteralIsInvalidJson) {
     const auto file = write("nan.json", "{\"version\": 1, \"light\": {\"ambient\": NaN}}");
     EXPECT_TRUE(hasMessage(loadErrors(file), file.string() + ":1:37: invalid JSON:"));
+}
+
+// 100000 nested arrays where an object belongs: a clear message, not a stack overflow while
+// quoting the value (tests/fuzz/crashes/preset).
+TEST_F(PresetFileTest, DeeplyNestedValueIsQuotedOneLevelDeep) {
+    const std::size_t depth = 100000;
+    const auto file = write("deep.json", "{\"version\": 1, \"camera\": " + std::string(depth, '[') +
+                                             std::string(depth, ']') + "}");
+    EXPECT_TRUE(hasMessage(loadErrors(file), file.string() + ": camera: expected an object, got array [[...]]"));
+}
+
+TEST_F(PresetFileTest, HugeFileIsRefusedBeforeReading) {
+    const auto file = write("huge.json", "{}");
+    std::filesystem::resize_file(file, 17u << 20);  // sparse: nothing is written
+    EXPECT_TRUE(hasMessage(loadErrors(file), file.string() + ": cannot read preset: 17825792 bytes, more than the 16 MiB"));
 }
 
 TEST_F(PresetFileTest, DirectoryGivesAClearError) {

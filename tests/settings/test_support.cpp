@@ -12,6 +12,7 @@ Settings everyFieldChanged() {
     Settings s;
     s.scene = "scenes/sponza/Sponza.gltf";
     s.notes = "No contact hardening; the source blends cascades in screen space.";
+    s.ground = true;
     s.camera = {.position = {1.5f, 2.25f, -3.0f}, .target = {0.5f, 0.0f, 1.0f}, .fovY = 45.5f,
                 .nearPlane = 0.25f, .farPlane = 250.0f};
     s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f};

@@ -77,8 +77,16 @@ TEST(ValidationTest, CheckNumberTakesDoublesBeforeNarrowing) {
     EXPECT_EQ(checkNumber(*findField("cascades.mapSize"), 768), "must be a power of two in 256..8192, got 768");
 }
 
+TEST(ValidationTest, GroundIsOnlyForGltfScenes) {
+    Settings s;
+    s.ground = true;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"ground: must be false for builtin:yard, which has its own ground"});
+    s.scene = "ship.glb";
+    EXPECT_TRUE(validate(s).empty());
+}
+
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 5u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 6u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 
