@@ -4,20 +4,41 @@
 #include "app/editor_window.h"
 #include "renderer/gpu/debug_output.h"
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 namespace st::app {
+namespace {
+constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end even if the job hangs
+
+// Frames until the window closes, or until opt.frames have run (and, with opt.waitAccuracy, the
+// Accuracy panel has its figures); the last frame writes the screenshot.
+void runFrames(EditorSession& session, const EditorOptions& opt) {
+    const auto start = std::chrono::steady_clock::now();
+    int finishedFrames = 0;
+    for (int frame = 0;; ++frame) {
+        // The figures reach the panel the frame after the job ends, and ImGui sizes a new table's
+        // columns over its first frames: the screenshot waits a few frames more.
+        finishedFrames = session.accuracy().finished() ? finishedFrames + 1 : 0;
+        const bool waiting = opt.waitAccuracy && finishedFrames < 4;
+        if (waiting && std::chrono::steady_clock::now() - start > kAccuracyTimeout)
+            throw std::runtime_error("the Accuracy panel's job did not end within 10 minutes");
+        const bool last = opt.frames > 0 && frame + 1 >= opt.frames && !waiting;
+        session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr);
+        if (last || session.quitRequested()) break;
+    }
+}
+
+}  // namespace
 
 int runEditor(const EditorOptions& opt) {
     try {
         EditorWindow window("shadowtune", opt.debugContext);
         EditorSession session(window, opt);
-        for (int frame = 0;; ++frame) {
-            bool last = opt.frames > 0 && frame + 1 >= opt.frames;
-            session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr);
-            if (last || session.quitRequested()) break;
-        }
+        runFrames(session, opt);
+        if (opt.waitAccuracy) std::printf("%s\n", session.accuracy().summary().c_str());
         if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
         if (opt.saveAs) session.saveAs(*opt.saveAs);
         session.printFrameTimes();
@@ -25,6 +46,7 @@ int runEditor(const EditorOptions& opt) {
             std::fprintf(stderr, "error: GL debug output reported %d errors (see above)\n", gpu::seriousDebugMessageCount());
             return 3;
         }
+        if (opt.waitAccuracy && !session.accuracy().done()) return 4;  // the summary says why
         return session.exitCode();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());

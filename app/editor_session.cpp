@@ -20,10 +20,11 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : w
     if (opt.preset || fs::exists(presetPath_)) settings_ = loadPreset(presetPath_);  // a bad file given by name fails
     else presetPath_.clear();
     valid_ = settings_;
-    loadScene(settings_.scene);
+    loadScene(settings_.scene, {.ground = settings_.ground});
     shadowTiles_ = std::make_unique<ShadowMapView>();
     ui_ = std::make_unique<ui::EditorUi>(opt.presetDir);
     ui_->setDocument(settings_, presetPath_);
+    accuracy_ = std::make_unique<EditorAccuracy>();
     scanPresets();
     lastTime_ = glfwGetTime();
 }
@@ -39,19 +40,21 @@ void EditorSession::scanPresets() {
 
 EditorSession::~EditorSession() = default;
 
-void EditorSession::loadScene(const std::string& spec) {
+void EditorSession::loadScene(const std::string& spec, const SceneOptions& options) {
     try {
         fs::path base = presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path();
-        auto scene = std::make_unique<Scene>(st::loadScene(spec, base));
+        auto scene = std::make_shared<const Scene>(st::loadScene(spec, base, options));
         renderer_.reset();  // the old renderer refers to the old scene
         scene_ = std::move(scene);
         renderer_ = std::make_unique<Renderer>(*scene_);
         loadedScene_ = spec;
+        loadedOptions_ = options;
         status_.clear();
     } catch (const std::exception& e) {
         status_ = e.what();
         if (!scene_) throw;  // nothing loaded yet: the session cannot start
         valid_.scene = loadedScene_;  // keep rendering the scene that works; the panel shows why
+        valid_.ground = loadedOptions_.ground;
     }
 }
 
@@ -94,7 +97,7 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     window_.setTitle(ui_->windowTitle());
 }
 
-void EditorSession::renderViews(int width, int height) {
+bool EditorSession::renderViews(int width, int height) {
     Settings s = valid_;
     s.output.width = width;
     s.output.height = height;
@@ -103,7 +106,7 @@ void EditorSession::renderViews(int width, int height) {
         stats_ = renderer_->render(s, orbit_);
     } catch (const std::exception& e) {  // settings the math rejects: keep the last image
         status_ = e.what();
-        return;
+        return false;
     }
     {
         // Until the panel reports the size it shows the picture at: a quarter of the window.
@@ -117,6 +120,18 @@ void EditorSession::renderViews(int width, int height) {
         else renderer_->renderSideView(valid_, orbit_, pip_);
     }
     shadowTiles_->update(renderer_->shadowMaps(), renderer_->plan(), scene_->wsBounds, 256);
+    return true;
+}
+
+// After the render, so a change made this frame (camera keys, a widget) drops the overlay before
+// it would be drawn over a view it no longer describes.
+void EditorSession::updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height) {
+    Settings s = valid_;  // what the main camera shows, at the scene view's size
+    s.output.width = width;
+    s.output.height = height;
+    accuracy_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, s, scene_);
+    if (r.errorOverlay && !swapped_ && accuracy_->overlay())
+        ui::drawErrorOverlay(reinterpret_cast<ImTextureID>(std::uintptr_t(accuracy_->overlay())));
 }
 
 void EditorSession::present(int width, int height) {
@@ -134,6 +149,7 @@ ui::UiInputs EditorSession::uiInputs() const {
     in.sideView = pip_.colorTexture() ? tex(pip_.colorTexture()) : tex(0);
     in.presetFiles = presetFiles_;
     in.statusLine = status_;
+    in.accuracy = accuracy_->view();
     return in;
 }
 
@@ -145,12 +161,15 @@ void EditorSession::frame(const fs::path* screenshot) {
         ui_->requestQuit();
     }
     handleInput();
-    applyRequests(ui_->draw(settings_, uiInputs()));
-    if (valid_.scene != loadedScene_) loadScene(valid_.scene);
+    const ui::UiRequests requests = ui_->draw(settings_, uiInputs());
+    applyRequests(requests);
+    if (const SceneOptions options{.ground = valid_.ground}; valid_.scene != loadedScene_ || options != loadedOptions_)
+        loadScene(valid_.scene, options);
     int width = 0, height = 0;
     window_.framebufferSize(width, height);
     if (width >= 16 && height >= 16) {
-        renderViews(width, height);
+        const bool rendered = renderViews(width, height);
+        updateAccuracy(requests, rendered, width, height);
         present(width, height);
     }
     window_.endFrame();

@@ -1,6 +1,7 @@
 #pragma once
 // One editing session: the Settings being tuned, the loaded scene and its renderer, the views
 // (main camera, side camera picture-in-picture, shadow-map tiles) and the panels.
+#include "app/editor_accuracy.h"
 #include "app/editor_app.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
@@ -29,13 +30,15 @@ public:
     void writeSceneShot(const std::filesystem::path& file) const;  // the main view, no panels
     void saveAs(const std::filesystem::path& file);  // output size = the scene view's size
     void printFrameTimes() const;                    // median CPU frame time and frame rate
+    const EditorAccuracy& accuracy() const { return *accuracy_; }
     int exitCode() const { return exitCode_; }
 
 private:
-    void loadScene(const std::string& spec);
+    void loadScene(const std::string& spec, const SceneOptions& options);
     void handleInput();
     void applyRequests(const ui::UiRequests& r);
-    void renderViews(int width, int height);
+    bool renderViews(int width, int height);  // false: the settings failed, the last image stays
+    void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
     void present(int width, int height);
     ui::UiInputs uiInputs() const;
     void scanPresets();
@@ -47,12 +50,14 @@ private:
     Settings settings_;   // what the panels edit
     Settings valid_;      // the last settings that passed validation: what is rendered
     std::string loadedScene_;
-    std::unique_ptr<Scene> scene_;
+    SceneOptions loadedOptions_;
+    std::shared_ptr<const Scene> scene_;  // shared with the Accuracy panel's background job
     std::unique_ptr<Renderer> renderer_;
     OffscreenTarget pip_;
     OffscreenTarget retiredPip_;  // the previous picture after a resize: this frame's panels may name it
     std::unique_ptr<ShadowMapView> shadowTiles_;
     std::unique_ptr<ui::EditorUi> ui_;
+    std::unique_ptr<EditorAccuracy> accuracy_;
     std::vector<std::filesystem::path> presetFiles_;
     int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
     FrameStats stats_;

@@ -51,14 +51,15 @@ std::vector<std::uint8_t> truthEdges(const MeasureSamples& s, const std::vector<
 }
 
 AccuracyReport scoreAccuracy(const MeasureSamples& s, const std::vector<std::uint8_t>& truth, int cascadeCount,
-                             const ResolutionExplains& explains) {
+                             const ResolutionExplains& explains, const RowControl& control) {
     AccuracyReport r;
     r.cascades.resize(std::size_t(std::max(cascadeCount, 0)));
     r.classes.assign(s.size(), PixelClass::NoSurface);
     forEachRowParallel(s.height, [&](int y) {
         for (std::size_t i = std::size_t(y) * s.width, end = i + s.width; i < end; ++i)
             r.classes[i] = classifyPixel(s, truth, i, explains);
-    });
+    }, control);
+    if (control.cancelled()) return r;
     const std::vector<std::uint8_t> edges = truthEdges(s, truth);
     for (std::size_t i = 0; i < s.size(); ++i) {
         const PixelClass c = r.classes[i];

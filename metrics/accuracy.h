@@ -5,6 +5,7 @@
 // whatever the map says (the main pass multiplies by max(N.L, 0)); terminator pixels (smooth
 // normal toward the sun, triangle away from it) have no answer the map could get right. Both
 // are counted apart and scored nowhere.
+#include "metrics/parallel_rows.h"
 #include "renderer/render/measure_samples.h"
 
 #include <cstddef>
@@ -67,8 +68,9 @@ using ResolutionExplains = std::function<bool(std::size_t pixel, bool mapLit)>;
 
 // Scores the unfiltered test (samples.shadow.x) and the filtered factor (.y) against `truth`
 // (1 lit, 0 shadowed) over `cascadeCount` cascades. Errors beyond the shadow range are gross
-// (a missing shadow that no resolution would bring back). Pixels are classified on all cores.
+// (a missing shadow that no resolution would bring back). Pixels are classified on the cores
+// `control` allows (`explains` casts rays); a cancelled report is incomplete, for throwing away.
 AccuracyReport scoreAccuracy(const MeasureSamples& samples, const std::vector<std::uint8_t>& truth, int cascadeCount,
-                             const ResolutionExplains& explains);
+                             const ResolutionExplains& explains, const RowControl& control = {});
 
 }  // namespace st::metrics

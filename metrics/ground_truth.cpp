@@ -156,14 +156,14 @@ bool GroundTruth::lit(glm::vec3 wsPoint, glm::vec3 wsNormal, glm::vec3 wsToSun, 
 }
 
 std::vector<std::uint8_t> GroundTruth::trace(const MeasureSamples& samples, glm::vec3 wsToSun, glm::vec3 wsEye,
-                                             RayOffset offset) const {
+                                             RayOffset offset, const RowControl& control) const {
     std::vector<std::uint8_t> out(samples.size(), 0);
     forEachRowParallel(samples.height, [&](int y) {
         for (std::size_t i = std::size_t(y) * samples.width, end = i + samples.width; i < end; ++i) {
             if (!samples.receiver(i)) continue;
             out[i] = lit(glm::vec3(samples.position[i]), glm::vec3(samples.geometry[i]), wsToSun, wsEye, offset);
         }
-    });
+    }, control);
     return out;
 }
 

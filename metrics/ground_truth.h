@@ -4,6 +4,7 @@
 // shadowed (0). No shadow map is involved. The BVH (Embree 3) holds exactly the Scene's
 // world-space triangles, the ones the GL passes draw; alpha-masked materials let rays through
 // where the GL alpha test discards (an occlusion filter samples the base-colour alpha at the hit).
+#include "metrics/parallel_rows.h"
 #include "renderer/render/measure_samples.h"
 #include "renderer/scene/scene.h"
 
@@ -39,9 +40,10 @@ public:
     // away from the sun (by the shading normal, or by the triangle's own normal: the terminator
     // band of smooth meshes) are 0 without a ray: the sun is behind their own surface, and the
     // accuracy metrics leave them out. Every receiver gets one ray, from its triangle's plane;
-    // rows are spread over all cores.
+    // rows are spread over the cores `control` allows. Rows a cancel skipped are left 0: a
+    // cancelled trace is for throwing away.
     std::vector<std::uint8_t> trace(const MeasureSamples& samples, glm::vec3 wsToSun, glm::vec3 wsEye,
-                                    RayOffset offset = {}) const;
+                                    RayOffset offset = {}, const RowControl& control = {}) const;
 
     // One ray: true if nothing blocks the way from wsOrigin toward the sun.
     bool reachesSun(glm::vec3 wsOrigin, glm::vec3 wsToSun) const;

@@ -47,6 +47,30 @@ Rgb densityColor(float pixelsPerTexel) {
     return Rgb(glm::pow(c, glm::vec3(1.0f / 2.2f)) * 255.0f + 0.5f);
 }
 
+// Over a lit scene errorImage's pale edge colours are about as bright as the ground: these are
+// darker, and keep the hues.
+Rgb overlayColor(PixelClass c) {
+    if (c == PixelClass::FalseShadowEdge) return {255, 120, 70};
+    if (c == PixelClass::FalseLightEdge) return {70, 150, 255};
+    return classColor(c);
+}
+
+bool isGross(PixelClass c) { return c == PixelClass::FalseShadowGross || c == PixelClass::FalseLightGross; }
+bool isError(PixelClass c) { return isGross(c) || c == PixelClass::FalseShadowEdge || c == PixelClass::FalseLightEdge; }
+
+// A translucent ring in gross pixel i's colour over its transparent 8-neighbours.
+void halo(Rgba8Image& img, std::size_t i, Rgb colour) {
+    const int x = int(i % std::size_t(img.width)), y = int(i / std::size_t(img.width));
+    for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, img.height - 1); ++ny) {
+        for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, img.width - 1); ++nx) {
+            const std::size_t n = std::size_t(ny) * std::size_t(img.width) + std::size_t(nx);
+            if (img.pixels[4 * n + 3] != 0) continue;
+            put(img, n, colour);
+            img.pixels[4 * n + 3] = 110;
+        }
+    }
+}
+
 }  // namespace
 
 Rgba8Image truthImage(const MeasureSamples& s, const std::vector<std::uint8_t>& truth) {
@@ -61,6 +85,18 @@ Rgba8Image truthImage(const MeasureSamples& s, const std::vector<std::uint8_t>& 
 Rgba8Image errorImage(const AccuracyReport& a, int width, int height) {
     Rgba8Image img = blank(width, height);
     for (std::size_t i = 0; i < a.classes.size(); ++i) put(img, i, classColor(a.classes[i]));
+    return img;
+}
+
+Rgba8Image errorOverlayImage(const AccuracyReport& a, int width, int height) {
+    Rgba8Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 4, 0)};
+    for (std::size_t i = 0; i < a.classes.size(); ++i) {
+        if (!isError(a.classes[i])) continue;
+        put(img, i, overlayColor(a.classes[i]));
+        img.pixels[4 * i + 3] = 255;
+    }
+    for (std::size_t i = 0; i < a.classes.size(); ++i)  // after every error pixel is opaque: rings never cover one
+        if (isGross(a.classes[i])) halo(img, i, overlayColor(a.classes[i]));
     return img;
 }
 

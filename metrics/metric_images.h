@@ -19,6 +19,12 @@ Rgba8Image truthImage(const MeasureSamples& s, const std::vector<std::uint8_t>& 
 // smooth meshes dark purple, no surface slate.
 Rgba8Image errorImage(const AccuracyReport& a, int width, int height);
 
+// The same errors for drawing over the scene: false shadow in reds, false light in blues, opaque;
+// lighter in the edge band, saturated when gross, and gross pixels ringed by a translucent halo
+// of their colour so a lone one can be found in a full-window view. Everything else is fully
+// transparent. Straight alpha.
+Rgba8Image errorOverlayImage(const AccuracyReport& a, int width, int height);
+
 // Screen pixels per texel on log2, the texel-density view's ramp: blue (1/16) .. green (1) ..
 // red (16); grey beyond the shadow range.
 Rgba8Image densityImage(const MeasureSamples& s);

@@ -34,6 +34,7 @@ void drawPanels(UiFrame& f) {
     drawPresetsPanel(f);
     drawShadowViewer(f);
     drawSideView(f);
+    drawAccuracyPanel(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
 }
@@ -42,6 +43,8 @@ void finishFrame(UiFrame& f, const Settings& atStart) {
     f.req.change = classifyChange(atStart, f.s);
     f.req.settingsValid = f.req.change == ChangeClass::None ? f.state.issues.empty() : validate(f.s).empty();
     f.req.quit = f.state.quitConfirmed;
+    f.req.accuracyWanted = f.state.showAccuracy;
+    f.req.errorOverlay = f.state.showAccuracy && f.state.errorOverlay;
     f.state.dirty = isDirty(f.state.doc, f.s);
 }
 

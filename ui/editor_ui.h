@@ -1,12 +1,14 @@
 #pragma once
-// The editor's Dear ImGui layer: the one entry point the app calls each frame.
+// The editor's Dear ImGui layer: the entry points the app calls each frame.
 //
 // The app owns the ImGui context and the platform/renderer backends (GLFW + OpenGL3); ui/ never
 // calls GL or GLFW. Each frame:
 //
 //     ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplGlfw_NewFrame(); ImGui::NewFrame();
 //     UiRequests r = ui.draw(settings, inputs);   // edits `settings` in place
-//     ImGui::Render(); ... render the scene with `settings` ...; ImGui_ImplOpenGL3_RenderDrawData(...)
+//     ... render the scene with `settings` ...
+//     if (r.errorOverlay && the overlay describes that frame) drawErrorOverlay(overlay);
+//     ImGui::Render(); ImGui_ImplOpenGL3_RenderDrawData(...)
 //     if (r.change != ChangeClass::None && r.settingsValid) apply it (r.change says how much to redo)
 //
 // Every widget comes from the settings field table and writes through FieldInfo::set, clamped to
@@ -15,6 +17,7 @@
 #include "renderer/render/frame_stats.h"
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/settings.h"
+#include "ui/accuracy_view.h"
 #include "ui/item_rects.h"
 
 #include <imgui.h>
@@ -39,6 +42,7 @@ struct UiInputs {
                                              // view when swapped); nullptr hides the window
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
+    AccuracyView accuracy;                   // the background ground truth's state and figures
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -57,6 +61,9 @@ struct UiRequests {
     ImVec2 sideViewOrbit{0.0f, 0.0f};        // mouse movement dragged with the left/right button
     ImVec2 sideViewPan{0.0f, 0.0f};          // ... with the middle button
     float sideViewZoom = 0.0f;               // mouse wheel over the side view
+    bool accuracyWanted = false;             // the Accuracy panel is open: compute its figures
+    bool errorOverlay = false;               // ... and its error overlay is switched on: pass the
+                                             // overlay to drawErrorOverlay() when it is current
 };
 
 // Native key codes the platform backend writes into io.KeysDown. ImGui 1.86 names only a few keys
@@ -67,6 +74,12 @@ struct ShortcutKeys {
     int frame = 70;   // F: frame the scene
     int help = 290;   // F1: help window
 };
+
+// Draws the Accuracy panel's error overlay (an RGBA texture, top row first, straight alpha) over
+// the whole window, under every panel. Call after draw() and before ImGui::Render(), once the
+// app knows the overlay describes the frame it is about to show: a frame that changed since the
+// figures were computed must not show them.
+void drawErrorOverlay(ImTextureID overlay);
 
 class EditorUi {
 public:

@@ -31,6 +31,16 @@ Area rightSlot(float top, float height) {
             {width, work.size.y * height}};
 }
 
+// Accuracy: along the bottom of the scene view, between the side columns, so most of the view
+// (and the error overlay on it) stays visible.
+Area bottomMiddle(float height) {
+    const Area work = workArea();
+    const float left = std::min(kLeftWidth, work.size.x * 0.5f);
+    const float right = std::min(kRightWidth, work.size.x * 0.4f);
+    const float width = std::max(work.size.x - left - right, 240.0f);
+    return {{work.pos.x + left, work.pos.y + work.size.y - height}, {width, height}};
+}
+
 Area centred(float width, float height) {
     const Area work = workArea();
     return {{work.pos.x + (work.size.x - width) * 0.5f, work.pos.y + (work.size.y - height) * 0.5f},
@@ -44,6 +54,7 @@ Area areaOf(Panel panel) {
         case Panel::Presets: return rightSlot(0.0f, 0.34f);
         case Panel::ShadowMaps: return rightSlot(0.34f, 0.33f);
         case Panel::SideView: return rightSlot(0.67f, 0.33f);
+        case Panel::Accuracy: return bottomMiddle(std::min(250.0f, work.size.y * 0.4f));
         case Panel::ShadowZoom: return centred(560.0f, 600.0f);
         case Panel::Help: return centred(460.0f, 330.0f);
         case Panel::Confirm: return centred(380.0f, 0.0f);

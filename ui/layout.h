@@ -4,7 +4,7 @@
 // arranged between runs.
 namespace st::ui {
 
-enum class Panel { Settings, Presets, ShadowMaps, SideView, ShadowZoom, Help, Confirm };
+enum class Panel { Settings, Presets, ShadowMaps, SideView, Accuracy, ShadowZoom, Help, Confirm };
 
 // Calls SetNextWindowPos/Size for `panel`; call right before its ImGui::Begin.
 void placeNextWindow(Panel panel);

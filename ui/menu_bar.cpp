@@ -28,6 +28,7 @@ void viewMenu(UiFrame& f) {
     ImGui::Separator();
     ImGui::MenuItem("Shadow maps", nullptr, &f.state.showShadowMaps);
     ImGui::MenuItem("Side view", nullptr, &f.state.showSideView);
+    ImGui::MenuItem("Accuracy", nullptr, &f.state.showAccuracy);
     ImGui::MenuItem("Help", "F1", &f.state.showHelp);
     ImGui::EndMenu();
 }

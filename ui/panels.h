@@ -12,6 +12,7 @@ void drawPresetsPanel(UiFrame& f);    // presets_panel.cpp: list, save, save as,
 void drawShadowViewer(UiFrame& f);    // shadow_viewer.cpp: a tile per cascade, zoom on click
 void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with orbit input
 void drawHelpWindow(UiFrame& f);      // help_window.cpp: shortcuts (F1)
+void drawAccuracyPanel(UiFrame& f);   // accuracy_panel.cpp: ground-truth figures, overlay toggle
 void drawConfirmDiscard(UiFrame& f);  // confirm_modal.cpp: "discard unsaved changes?"
 
 }  // namespace st::ui

@@ -36,6 +36,8 @@ struct UiState {
     bool showShadowMaps = true;
     bool showSideView = true;
     bool showHelp = false;
+    bool showAccuracy = true;              // the Accuracy panel; closed, no ground truth is computed
+    bool errorOverlay = true;              // its error overlay over the scene view
     int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
 
     std::string saveAsText;                // the "Save as" path field

@@ -1,11 +1,15 @@
-// The real editor window under Xvfb: it must start, draw panels and the scene, and exit 0.
+// The real editor window under Xvfb: it must start, draw panels and the scene, and exit 0; its
+// Accuracy panel must come up with the figures `measure` gives for the same frame.
 #include "renderer/image/image_io.h"
+#include "renderer/settings/settings_json.h"
 #include "tests/support/image_compare.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -54,5 +58,55 @@ TEST(EditorSmokeTest, PresetSavedFromEditorReplaysHeadlessToTheSameImage) {
     st::Rgba8Image replayed = st::readImage(dir / "replay" / "saved.png");
     st::test::CompareResult r = st::test::compareImages(replayed, fromEditor, {});  // renderdiff tolerance
     EXPECT_TRUE(r.pass) << r.summary();
+    fs::remove_all(dir);
+}
+
+namespace {
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// "misclassified 1.234% (false shadow ...; gross N px)": the part of the summary that `measure`
+// and the editor's --wait-accuracy print alike.
+std::string accuracyFigures(const std::string& log) {
+    const auto from = log.find("misclassified ");
+    const auto to = log.find(" px)", from);
+    return from == std::string::npos || to == std::string::npos ? "" : log.substr(from, to + 4 - from);
+}
+
+}  // namespace
+
+// The Accuracy panel on the real window: after the camera has been still, the background ground
+// truth ends, its figures are those `measure` gives for the same frame, and its error overlay is
+// drawn over the scene. Bias off, so acne covers the ground in the overlay's red.
+TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run missing (scripts/setup.sh installs xvfb)";
+    fs::path dir = fs::temp_directory_path() / ("st-accuracy-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path preset = dir / "acne.json";
+    st::Settings s = st::loadPreset(ST_PRESET_DIR "/default.json");
+    s.bias.constant = 0.0f;
+    s.bias.slope = 0.0f;
+    st::savePresetAtomic(s, preset);
+    const fs::path shot = dir / "editor.png", log = dir / "log.txt";
+    std::string editor = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" ST_SHADOWTUNE
+                         "' editor '" + preset.string() + "' --frames 2 --wait-accuracy --debug-gl --screenshot '" +
+                         shot.string() + "' > '" + log.string() + "' 2>&1";
+    ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << log;
+    const std::string editorLog = readText(log);
+    ASSERT_NE(editorLog.find("accuracy: done in"), std::string::npos) << editorLog;
+
+    const std::string measure = "'" ST_SHADOWTUNE "' measure '" + preset.string() + "' --size 1280x720 --no-flicker "
+                                "--frames 1 --out '" + (dir / "measure").string() + "' > '" + (dir / "measure.txt").string() + "' 2>&1";
+    ASSERT_EQ(std::system(measure.c_str()), 0) << "measure failed, see " << (dir / "measure.txt");
+    const std::string figures = accuracyFigures(editorLog);
+    EXPECT_FALSE(figures.empty()) << editorLog;
+    EXPECT_EQ(figures, accuracyFigures(readText(dir / "measure.txt")));
+
+    st::Rgba8Image img = st::readImage(shot);
+    ASSERT_EQ(img.width, 1280);
+    EXPECT_GT(countNear(img, 230, 20, 20, 4), 5000) << "no false-shadow overlay over the scene";
     fs::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 // pressed, the saved preset is read back, the drag is undone; screenshots of the panels are
 // written to tests/artifacts/ui/ for a person to look at.
 #include "renderer/image/image_io.h"
+#include "renderer/render/image_texture.h"
 #include "renderer/settings/settings_json.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/ui/ui_gl_driver.h"
@@ -119,4 +120,60 @@ TEST_F(EditorUiGLTest, ShadowTileZoomsOnClick) {
     d.pressKey(kKeyF1);
     warmUp(d, 2);
     screenshot(d, "editor_zoom_help.png");
+}
+
+namespace {
+
+// An overlay like the app's (top row first): a false-shadow red block above a false-light blue
+// one, both in the scene area between the panels, transparent elsewhere.
+Rgba8Image testOverlay(int width, int height) {
+    Rgba8Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 4, 0)};
+    auto block = [&](int y0, std::uint8_t r, std::uint8_t b) {
+        for (int y = y0; y < y0 + 60; ++y)
+            for (int x = 600; x < 760; ++x) {
+                std::uint8_t* p = &img.pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+                p[0] = r, p[1] = 20, p[2] = b, p[3] = 255;
+            }
+    };
+    block(100, 230, 20);
+    block(300, 20, 255);
+    return img;
+}
+
+ui::AccuracyView doneAccuracy() {
+    ui::AccuracyView a;
+    a.state = ui::AccuracyView::State::Done;
+    a.seconds = 1.25;
+    a.timing = "read-back 0.10 s, BVH 0.05 s, rays 0.90 s, scoring 0.20 s";
+    a.width = 1280;
+    a.height = 720;
+    a.all = {812345, 140, 3, 221, 1, 0.0042};
+    a.cascades = {{200000, 90, 3, 120, 0, 0.0061}, {250000, 30, 0, 70, 1, 0.0040},
+                  {220000, 15, 0, 25, 0, 0.0031}, {142345, 5, 0, 6, 0, 0.0022}};
+    return a;
+}
+
+}  // namespace
+
+TEST_F(EditorUiGLTest, AccuracyPanelAndOverlayAreDrawnUpright) {
+    GlUiDriver d;
+    giveInputs(d);
+    ImageTexture overlay;
+    const Rgba8Image picture = testOverlay(1280, 720);
+    overlay.upload(picture.width, picture.height, picture.pixels);
+    d.overlay = reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(overlay.id()));
+    d.in.accuracy = doneAccuracy();
+    warmUp(d, 3);
+    ASSERT_TRUE(d.drawn("accuracy.figures"));
+    const Rgba8Image shot = d.screenshot();
+    auto at = [&](int x, int y) { return &shot.pixels[(std::size_t(y) * 1280 + std::size_t(x)) * 4]; };
+    EXPECT_GT(at(680, 130)[0], 200);  // red on top: texel row 0 is the picture's top row
+    EXPECT_LT(at(680, 130)[2], 60);
+    EXPECT_GT(at(680, 330)[2], 200);  // blue below
+    EXPECT_LT(at(680, 330)[0], 60);
+    screenshot(d, "editor_accuracy.png");
+
+    d.click("accuracy.overlay");  // off: the scene shows through again
+    warmUp(d, 1);
+    EXPECT_LT(d.screenshot().pixels[(130 * 1280 + 680) * 4], 100);
 }

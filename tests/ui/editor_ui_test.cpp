@@ -251,3 +251,56 @@ TEST_F(EditorUiTest, ViewShortcutsBecomeRequestsAndF1TogglesHelp) {
     ImGui::GetIO().KeysDown[70] = false;
     d.frame();
 }
+
+namespace {
+
+ui::AccuracyView doneAccuracy() {
+    ui::AccuracyView a;
+    a.state = ui::AccuracyView::State::Done;
+    a.seconds = 1.25;
+    a.width = 1280;
+    a.height = 720;
+    a.all = {800000, 120, 3, 200, 1, 0.0042};
+    a.cascades = {{300000, 100, 3, 150, 0, 0.005}, {500000, 20, 0, 50, 1, 0.0035}};
+    return a;
+}
+
+}  // namespace
+
+TEST_F(EditorUiTest, AccuracyPanelShowsFiguresOnlyWhenDone) {
+    d.in.accuracy.state = ui::AccuracyView::State::Settling;
+    d.frame();
+    EXPECT_TRUE(d.drawn("accuracy.state"));
+    EXPECT_FALSE(d.drawn("accuracy.figures"));
+    EXPECT_TRUE(d.last.accuracyWanted);  // open by default: the app computes
+    EXPECT_TRUE(d.last.errorOverlay);
+
+    d.in.accuracy.state = ui::AccuracyView::State::Computing;
+    d.in.accuracy.progress = 0.4f;
+    d.in.accuracy.phase = "casting rays";
+    d.frame();
+    EXPECT_TRUE(d.drawn("accuracy.state"));
+    EXPECT_FALSE(d.drawn("accuracy.figures"));
+
+    d.in.accuracy = doneAccuracy();
+    d.frame();
+    EXPECT_TRUE(d.drawn("accuracy.figures"));
+    EXPECT_TRUE(d.drawn("accuracy.cascades"));
+
+    d.in.accuracy = {};
+    d.in.accuracy.state = ui::AccuracyView::State::Failed;
+    d.in.accuracy.error = "Embree could not create a device";
+    d.frame();
+    EXPECT_FALSE(d.drawn("accuracy.figures"));
+}
+
+TEST_F(EditorUiTest, OverlayCheckboxTurnsTheOverlayRequestOff) {
+    d.in.accuracy = doneAccuracy();
+    d.frame();
+    ASSERT_TRUE(d.last.errorOverlay);
+    d.click("accuracy.overlay");
+    EXPECT_FALSE(d.last.errorOverlay);
+    EXPECT_TRUE(d.last.accuracyWanted);  // the figures are still wanted
+    d.click("accuracy.overlay");
+    EXPECT_TRUE(d.last.errorOverlay);
+}

@@ -48,6 +48,7 @@ void UiDriver::frame() {
     beginBackendFrame();
     ImGui::NewFrame();
     last = ui_->draw(s, in);
+    if (overlay && last.errorOverlay) ui::drawErrorOverlay(overlay);
     ImGui::Render();
     renderDrawData(ImGui::GetDrawData());
 }

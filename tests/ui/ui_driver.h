@@ -31,6 +31,7 @@ public:
     Settings s;              // what the editor edits
     ui::UiInputs in;         // what the "app" shows it
     ui::UiRequests last;     // requests of the last frame
+    ImTextureID overlay = nullptr;  // drawn with ui::drawErrorOverlay when the frame asks for it, as the app does
 
     // One frame: backend NewFrame, ImGui::NewFrame, ui.draw, ImGui::Render, backend render.
     void frame();

@@ -1,0 +1,135 @@
+// The Accuracy panel: the ground truth of the frame on screen, computed by the app in the
+// background once the camera and settings are still, and the toggle of its error overlay.
+#include "ui/layout.h"
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <string>
+
+namespace st::ui {
+namespace {
+
+// The overlay's gross colours (metrics/metric_images.cpp); the blue lightened to read on a dark panel.
+const ImVec4 kFalseShadowColour{230 / 255.0f, 20 / 255.0f, 20 / 255.0f, 1.0f};
+const ImVec4 kFalseLightColour{60 / 255.0f, 110 / 255.0f, 255 / 255.0f, 1.0f};
+const ImVec4 kErrorColour{1.0f, 0.35f, 0.3f, 1.0f};
+
+std::string percent(double share) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f%%", 100.0 * share);
+    return text;
+}
+
+void cell(const std::string& text) {
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(text.c_str());
+}
+
+void countsRow(const char* label, const AccuracyCounts& c) {
+    ImGui::TableNextRow();
+    cell(label);
+    cell(std::to_string(c.receivers));
+    cell(percent(c.share(c.misclassified())));
+    cell(percent(c.share(c.falseShadow())));
+    cell(percent(c.share(c.falseLight())));
+    cell(std::to_string(c.gross()));
+    char filtered[32];
+    std::snprintf(filtered, sizeof filtered, "%.4f", c.filteredError);
+    cell(filtered);
+}
+
+void cascadeTable(UiFrame& f) {
+    const AccuracyView& a = f.in.accuracy;
+    constexpr ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("accuracyCascades", 7, flags)) return;
+    for (const char* name : {"", "sun-facing px", "misclass.", "false shadow", "false light", "gross px", "filtered"})
+        ImGui::TableSetupColumn(name);
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < a.cascades.size(); ++i) countsRow(("C" + std::to_string(i)).c_str(), a.cascades[i]);
+    if (a.beyond.receivers > 0) countsRow("beyond", a.beyond);
+    ImGui::EndTable();
+    recordItem(f.state.rects, "accuracy.cascades");
+}
+
+void figures(UiFrame& f) {
+    const AccuracyView& a = f.in.accuracy;
+    const AccuracyCounts& c = a.all;
+    ImGui::Text("Misclassified %s of %zu sun-facing px:", percent(c.share(c.misclassified())).c_str(), c.receivers);
+    ImGui::TextColored(kFalseShadowColour, "false shadow %s", percent(c.share(c.falseShadow())).c_str());
+    ImGui::SameLine();
+    ImGui::TextColored(kFalseLightColour, "false light %s", percent(c.share(c.falseLight())).c_str());
+    // Gross errors are few when settings are sane, and each is a real artifact: count them.
+    ImGui::Text("Edge band %s, gross %zu px; filtered error %.4f", percent(c.share(c.edge())).c_str(), c.gross(),
+                c.filteredError);
+    recordItem(f.state.rects, "accuracy.figures");
+    cascadeTable(f);
+}
+
+void stateLine(UiFrame& f) {
+    const AccuracyView& a = f.in.accuracy;
+    switch (a.state) {
+    case AccuracyView::State::Off:
+    case AccuracyView::State::Settling:
+        ImGui::TextDisabled("Waiting for the camera to settle...");
+        break;
+    case AccuracyView::State::Computing: {
+        char overlay[96];
+        std::snprintf(overlay, sizeof overlay, "computing... %.0f %% (%s)", 100.0 * a.progress, a.phase.c_str());
+        ImGui::ProgressBar(a.progress, ImVec2(-1.0f, 0.0f), overlay);
+        break;
+    }
+    case AccuracyView::State::Done:
+        ImGui::Text("Done in %.2f s (%d x %d px)", a.seconds, a.width, a.height);
+        recordItem(f.state.rects, "accuracy.state");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", a.timing.c_str());
+        return;
+    case AccuracyView::State::Failed:
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::TextWrapped("Failed: %s", a.error.c_str());
+        ImGui::PopStyleColor();
+        break;
+    }
+    recordItem(f.state.rects, "accuracy.state");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Exact ray-cast shadows of the frame on screen against the shadow map's unfiltered test.\n"
+                          "Computed in the background once the camera and settings stay still; any change "
+                          "cancels it.");
+}
+
+void overlayToggle(UiFrame& f) {
+    ImGui::Checkbox("Error overlay", &f.state.errorOverlay);
+    recordItem(f.state.rects, "accuracy.overlay");
+    ImGui::SameLine();
+    ImGui::TextColored(kFalseShadowColour, "false shadow");
+    ImGui::SameLine();
+    ImGui::TextColored(kFalseLightColour, "false light");
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Lighter: within the edge band (what the map's resolution explains).\n"
+                          "Saturated, with a translucent ring: gross (acne, leaks, peter-panning, missing casters).\n"
+                          "Shown over the main view only, and only while it is the frame that was measured.");
+}
+
+}  // namespace
+
+void drawAccuracyPanel(UiFrame& f) {
+    if (!f.state.showAccuracy) return;
+    placeNextWindow(Panel::Accuracy);
+    if (ImGui::Begin("Accuracy", &f.state.showAccuracy)) {
+        stateLine(f);
+        overlayToggle(f);
+        if (f.in.accuracy.state == AccuracyView::State::Done) figures(f);
+    }
+    ImGui::End();
+}
+
+void drawErrorOverlay(ImTextureID overlay) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const ImVec2 max{viewport->Pos.x + viewport->Size.x, viewport->Pos.y + viewport->Size.y};
+    ImGui::GetBackgroundDrawList()->AddImage(overlay, viewport->Pos, max);  // row 0 is the top: no flip
+}
+
+}  // namespace st::ui

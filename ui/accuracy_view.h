@@ -1,0 +1,48 @@
+#pragma once
+// What the Accuracy panel shows, as plain values: the app turns its background ground-truth job
+// (metrics/) into these, so ui/ needs neither the metrics layer nor GL. Figures follow DESIGN.md
+// "How the product is measured" and the `measure` command's summary.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace st::ui {
+
+// Pixel counts of one group of pixels (the frame, one cascade, or beyond the shadow range).
+struct AccuracyCounts {
+    std::size_t receivers = 0;  // sun-facing pixels: the denominator of every share
+    std::size_t falseShadowEdge = 0;
+    std::size_t falseShadowGross = 0;
+    std::size_t falseLightEdge = 0;
+    std::size_t falseLightGross = 0;
+    double filteredError = 0.0;  // mean |filtered factor - truth|
+
+    std::size_t falseShadow() const { return falseShadowEdge + falseShadowGross; }
+    std::size_t falseLight() const { return falseLightEdge + falseLightGross; }
+    std::size_t edge() const { return falseShadowEdge + falseLightEdge; }
+    std::size_t gross() const { return falseShadowGross + falseLightGross; }
+    std::size_t misclassified() const { return falseShadow() + falseLight(); }
+    double share(std::size_t count) const { return receivers ? double(count) / double(receivers) : 0.0; }
+};
+
+struct AccuracyView {
+    enum class State {
+        Off,        // the app computes nothing (the panel was never shown)
+        Settling,   // waiting for the camera and settings to stay still
+        Computing,  // ground truth running in the background
+        Done,       // figures below describe the frame on screen
+        Failed,     // `error` says why
+    };
+    State state = State::Off;
+    float progress = 0.0f;      // Computing: 0..1
+    std::string phase;          // Computing: "building the BVH", "casting rays", ...
+    double seconds = 0.0;       // Done: read-back to result, wall time
+    std::string timing;         // Done: where the time went, one line
+    std::string error;          // Failed
+    int width = 0, height = 0;  // Done: pixels measured (the scene view)
+    AccuracyCounts all;
+    std::vector<AccuracyCounts> cascades;
+    AccuracyCounts beyond;      // past the shadow distance: drawn lit
+};
+
+}  // namespace st::ui
