@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (CMake preset `fuzz`: clang 14, ASan + UBSan) and runs each for a
+# Builds the libFuzzer targets (in the `asan` preset: clang 14, ASan + UBSan) and runs each for a
 # bounded time on a copy of its seed corpus. Fails on any crash, sanitizer report, leak, timeout
 # or out-of-memory; the input that caused it is left in build/fuzz/artifacts/.
 #
@@ -12,7 +12,7 @@
 #
 # The committed seeds (tests/fuzz/corpus/<target>) are never written to. Saved crash inputs
 # (tests/fuzz/crashes/<target>) are run first, so a bug that is still there (or back) fails at once.
-# Reproduce a failure: build/fuzz/tests/fuzz/fuzz_<target> build/fuzz/artifacts/<target>-crash-...
+# Reproduce a failure: build/asan/tests/fuzz/fuzz_<target> build/fuzz/artifacts/<target>-crash-...
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -35,10 +35,11 @@ if ! command -v clang++-14 >/dev/null ||
 fi
 
 start=$SECONDS
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz
+cmake --preset asan >/dev/null
+cmake --build --preset asan --target fuzz_preset fuzz_gltf
 echo "fuzz: build took $((SECONDS - start)) s"
 
+bin=build/asan/tests/fuzz
 out=build/fuzz
 mkdir -p "$out/artifacts" "$out/logs" "$out/corpus-work"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:symbolize=1}
@@ -70,9 +71,9 @@ run() {
   local crashes=()
   [[ -d tests/fuzz/crashes/$t ]] && mapfile -t crashes < <(find tests/fuzz/crashes/"$t" -type f ! -name '.*' | sort)
   if ((${#crashes[@]})); then
-    "$out/tests/fuzz/fuzz_$t" "${flags[@]}" "${crashes[@]}" >>"$out/logs/$t.log" 2>&1 || return
+    "$bin/fuzz_$t" "${flags[@]}" "${crashes[@]}" >>"$out/logs/$t.log" 2>&1 || return
   fi
-  "$out/tests/fuzz/fuzz_$t" "$work" "${flags[@]}" -max_total_time="$seconds" -max_len="${max_len[$t]}" \
+  "$bin/fuzz_$t" "$work" "${flags[@]}" -max_total_time="$seconds" -max_len="${max_len[$t]}" \
     -dict="tests/fuzz/$t.dict" -print_final_stats=1 >>"$out/logs/$t.log" 2>&1
 }
 
