@@ -90,6 +90,10 @@ int runMeasure(const MeasureCommandOptions& opt) {
     metrics::MeasureSession session;
     int failed = 0;
     for (const fs::path& preset : opt.presets) {
+        if (isJsonSchemaFile(preset)) {
+            std::fprintf(stderr, "note: %s is the presets' JSON Schema, not a preset: skipped\n", preset.string().c_str());
+            continue;
+        }
         try {
             measureOne(opt, preset, session);
         } catch (const std::exception& e) {

@@ -121,6 +121,10 @@ int runRender(const RenderOptions& opt) {
     SceneCache cache;
     int failed = 0;
     for (const fs::path& preset : opt.presets) {
+        if (isJsonSchemaFile(preset)) {
+            std::fprintf(stderr, "note: %s is the presets' JSON Schema, not a preset: skipped\n", preset.string().c_str());
+            continue;
+        }
         try {
             renderOne(opt, preset, cache);
         } catch (const std::exception& e) {

@@ -44,6 +44,11 @@ check "mixed run exits 1" rc 1
 check "mixed run still writes the good image" test -s "$work/mixed/box-over-plane.png"
 check "mixed run reports the skip" err_has "skipped $data/bad-count.json"
 
+run render "$presets/schema.json" "$presets/box-over-plane.json" --out "$work/glob" --size 32x32
+check "presets/*.json with the schema exits 0" rc 0
+check "the schema is skipped with a note" err_has "presets/schema.json is the presets' JSON Schema, not a preset: skipped"
+check "the schema writes no image" bash -c "! ls '$work/glob'/schema* 2>/dev/null"
+
 run render "$work/does-not-exist.json" --out "$work/x"
 check "missing preset exits non-zero" rc_nonzero
 check "missing preset is named" err_has "does-not-exist.json"

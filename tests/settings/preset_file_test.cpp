@@ -112,6 +112,14 @@ TEST_F(PresetFileTest, HugeFileIsRefusedBeforeReading) {
     EXPECT_TRUE(hasMessage(loadErrors(file), file.string() + ": cannot read preset: 17825792 bytes, more than the 16 MiB"));
 }
 
+TEST_F(PresetFileTest, TheShippedSchemaIsRecognisedAndPresetsAreNot) {
+    EXPECT_TRUE(isJsonSchemaFile(ST_PRESET_DIR "/schema.json"));
+    EXPECT_FALSE(isJsonSchemaFile(ST_PRESET_DIR "/default.json"));  // "$schema": "./schema.json"
+    EXPECT_FALSE(isJsonSchemaFile(write("broken.json", "{\"$schema\": ")));
+    EXPECT_FALSE(isJsonSchemaFile(dir / "missing.json"));
+    EXPECT_FALSE(isJsonSchemaFile(dir));
+}
+
 TEST_F(PresetFileTest, DirectoryGivesAClearError) {
     EXPECT_TRUE(hasMessage(loadErrors(dir), dir.string() + ": cannot read preset: is a directory, not a JSON file"));
 }
