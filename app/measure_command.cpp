@@ -1,5 +1,7 @@
 #include "app/measure_command.h"
 
+#include "app/preset_batch.h"
+
 #include "metrics/measure_session.h"
 #include "metrics/metric_images.h"
 #include "metrics/metrics_json.h"
@@ -18,15 +20,8 @@ namespace st::app {
 namespace fs = std::filesystem;
 namespace {
 
-void makeDir(const fs::path& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir))
-        throw std::runtime_error(dir.string() + ": cannot create output folder: " + (ec ? ec.message() : "not a directory"));
-}
-
 void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
-    makeDir(dir);
+    makeOutputDir(dir);
     writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
     writeImageAtomic(dir / "errors.png", metrics::errorImage(m.accuracy, m.samples.width, m.samples.height));
     writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
@@ -80,7 +75,7 @@ void measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metric
 int runMeasure(const MeasureCommandOptions& opt) {
     std::unique_ptr<HeadlessContext> ctx;
     try {
-        makeDir(opt.outDir);
+        makeOutputDir(opt.outDir);
         ctx = HeadlessContext::create(opt.debugContext);
         if (opt.debugContext) gpu::enableDebugOutput();
     } catch (const std::exception& e) {
@@ -88,21 +83,7 @@ int runMeasure(const MeasureCommandOptions& opt) {
         return 2;
     }
     metrics::MeasureSession session;
-    int failed = 0;
-    for (const fs::path& preset : opt.presets) {
-        if (isJsonSchemaFile(preset)) {
-            std::fprintf(stderr, "note: %s is the presets' JSON Schema, not a preset: skipped\n", preset.string().c_str());
-            continue;
-        }
-        try {
-            measureOne(opt, preset, session);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "error: %s\nskipped %s\n", e.what(), preset.string().c_str());
-            ++failed;
-        }
-    }
-    if (failed) std::fprintf(stderr, "%d of %zu presets failed\n", failed, opt.presets.size());
-    return failed ? 1 : 0;
+    return forEachPreset(opt.presets, [&](const fs::path& preset) { measureOne(opt, preset, session); });
 }
 
 }  // namespace st::app

@@ -1,5 +1,7 @@
 #include "app/render_command.h"
 
+#include "app/preset_batch.h"
+
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
 #include "renderer/gpu/gl.h"
@@ -99,19 +101,12 @@ void renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache& cac
     std::fflush(stdout);
 }
 
-void prepareOutDir(const fs::path& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir))
-        throw std::runtime_error(dir.string() + ": cannot create output folder: " +
-                                 (ec ? ec.message() : "not a directory"));
-}
 }  // namespace
 
 int runRender(const RenderOptions& opt) {
     std::unique_ptr<HeadlessContext> ctx;
     try {
-        prepareOutDir(opt.outDir);
+        makeOutputDir(opt.outDir);
         ctx = HeadlessContext::create(opt.debugContext);
         if (opt.debugContext) gpu::enableDebugOutput();
     } catch (const std::exception& e) {
@@ -119,22 +114,7 @@ int runRender(const RenderOptions& opt) {
         return 2;
     }
     SceneCache cache;
-    int failed = 0;
-    for (const fs::path& preset : opt.presets) {
-        if (isJsonSchemaFile(preset)) {
-            std::fprintf(stderr, "note: %s is the presets' JSON Schema, not a preset: skipped\n", preset.string().c_str());
-            continue;
-        }
-        try {
-            renderOne(opt, preset, cache);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "error: %s\nskipped %s\n", e.what(), preset.string().c_str());
-            ++failed;
-        }
-    }
-    if (failed)
-        std::fprintf(stderr, "%d of %zu presets failed\n", failed, opt.presets.size());
-    return failed ? 1 : 0;
+    return forEachPreset(opt.presets, [&](const fs::path& preset) { renderOne(opt, preset, cache); });
 }
 
 }  // namespace st::app
