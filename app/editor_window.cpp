@@ -1,6 +1,7 @@
 #include "app/editor_window.h"
 
 #include "renderer/gpu/debug_output.h"
+#include "renderer/gpu/pass_state.h"
 #include "renderer/image/image_io.h"
 
 #include <epoxy/gl.h>
@@ -98,8 +99,10 @@ void EditorWindow::endFrame() {
     ImGui::Render();
     int w = 0, h = 0;
     framebufferSize(w, h);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, w, h);
+    // The backend sets blending and scissoring itself; the rest is the window's framebuffer.
+    gpu::PassState ui;
+    ui.viewport = {0, 0, w, h};
+    gpu::applyPassState(ui);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

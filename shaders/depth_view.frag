@@ -1,18 +1,16 @@
 #version 450 core
-// One shadow-map layer made visible: depth remapped from [uLo, uHi] (where the scene lies in the
-// light box) to a grey ramp, near = bright; texels never written (depth 1) in dark blue.
-layout(binding = 0) uniform sampler2DArray uDepth;
-uniform int uLayer;
-uniform float uLo;
-uniform float uHi;
+#include "interface.h"
+// One shadow-map layer made visible: depth remapped from [depthLo, depthHi] (where the scene lies
+// in the light box) to a grey ramp, near = bright; texels never written (depth 1) in dark blue.
+layout(binding = ST_BINDING_DEPTH_VIEW) uniform sampler2DArray uDepth;
 in vec2 vUv;
 out vec4 oColor;
 void main() {
-    float d = texture(uDepth, vec3(vUv, float(uLayer))).r;
+    float d = texture(uDepth, vec3(vUv, float(layer))).r;
     if (d >= 1.0) {
         oColor = vec4(0.05, 0.07, 0.2, 1.0);
         return;
     }
-    float v = 1.0 - clamp((d - uLo) / max(uHi - uLo, 1e-6), 0.0, 1.0);
+    float v = 1.0 - clamp((d - depthLo) / max(depthHi - depthLo, 1e-6), 0.0, 1.0);
     oColor = vec4(vec3(0.15 + 0.85 * v), 1.0);
 }

@@ -1,9 +1,9 @@
 #version 450 core
-layout(location = 0) in vec3 aPosition;  // ws
-layout(location = 1) in vec3 aColor;
-uniform mat4 uViewProj;
+#include "interface.h"
+layout(location = ST_ATTRIB_POSITION) in vec3 aPosition;  // ws
+layout(location = ST_ATTRIB_COLOR) in vec3 aColor;
 out vec3 vColor;
 void main() {
     vColor = aColor;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
+    gl_Position = viewProj * vec4(aPosition, 1.0);
 }

@@ -1,17 +1,16 @@
 #version 450 core
-layout(location = 0) in vec3 aPosition;  // ws
-layout(location = 1) in vec3 aNormal;    // ws
-layout(location = 2) in vec2 aUv;
-uniform mat4 uView;
-uniform mat4 uViewProj;
+#include "interface.h"
+layout(location = ST_ATTRIB_POSITION) in vec3 aPosition;  // ws
+layout(location = ST_ATTRIB_NORMAL) in vec3 aNormal;      // ws
+layout(location = ST_ATTRIB_UV) in vec2 aUv;
 out vec3 vWsPosition;
 out vec3 vWsNormal;
 out vec2 vUv;
-out float vVsDepth;  // positive distance along the view axis, compared with the split depths
+out float vVsDepth;  // positive distance along the cascade camera's view axis, compared with the splits
 void main() {
     vWsPosition = aPosition;
     vWsNormal = aNormal;
     vUv = aUv;
-    vVsDepth = -(uView * vec4(aPosition, 1.0)).z;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
+    vVsDepth = -(view * vec4(aPosition, 1.0)).z;
+    gl_Position = viewProj * vec4(aPosition, 1.0);
 }

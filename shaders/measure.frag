@@ -9,16 +9,10 @@
 //      shades), z cascade (-1 beyond the shadow range), w screen pixels per texel
 //   3: the triangle's own (geometric) normal, on the viewer's side like the shading normal;
 //      w = its N.L. Smooth shading normals bend away from it, but rays and depth maps see it.
-#include "limits.h"
+#include "interface.h"
 #include "shadow_sampling.glsl"
 
 layout(binding = ST_BINDING_BASE_COLOR) uniform sampler2D uBaseColorTex;
-uniform vec4 uBaseColor;
-uniform bool uHasTexture;
-uniform bool uAlphaMask;
-uniform float uAlphaCutoff;
-uniform vec3 uWsToSun;  // unit vector toward the sun
-
 in vec3 vWsPosition;
 in vec3 vWsNormal;
 in vec2 vUv;
@@ -32,12 +26,12 @@ void main() {
     // Before the discard, so the whole 2x2 quad still runs when they are taken.
     vec3 wsDx = dFdx(vWsPosition);
     vec3 wsDy = dFdy(vWsPosition);
-    vec4 base = uBaseColor;
-    if (uHasTexture) base *= texture(uBaseColorTex, vUv);
-    if (uAlphaMask && base.a < uAlphaCutoff) discard;
+    vec4 base = baseColor;
+    if (hasTexture != 0) base *= texture(uBaseColorTex, vUv);
+    if (alphaMask != 0 && base.a < alphaCutoff) discard;
     vec3 n = normalize(vWsNormal);
     if (!gl_FrontFacing) n = -n;
-    float nDotL = dot(n, uWsToSun);
+    float nDotL = dot(n, wsToSun.xyz);
     ShadowResult s = shadowFactor(vWsPosition, n, nDotL, vVsDepth);
     int ci = max(s.cascade, 0);
     float hard = hardShadow(ci, shadowCoord(ci, vWsPosition, n), tanToLight(nDotL));
@@ -47,6 +41,6 @@ void main() {
     oNormal = vec4(n, nDotL);
     vec3 g = normalize(cross(wsDx, wsDy));  // the position's derivatives span the triangle's plane
     if (dot(g, n) < 0.0) g = -g;
-    oGeometry = vec4(g, dot(g, uWsToSun));
+    oGeometry = vec4(g, dot(g, wsToSun.xyz));
     oShadow = vec4(inRange ? hard : 1.0, s.factor, float(s.cascade), inRange ? screenPixelsPerTexel(j) : 0.0);
 }

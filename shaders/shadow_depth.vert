@@ -1,9 +1,9 @@
 #version 450 core
-layout(location = 0) in vec3 aPosition;
-layout(location = 2) in vec2 aUv;
-uniform mat4 uViewProj;  // world -> light clip of the cascade being rendered
+#include "interface.h"
+layout(location = ST_ATTRIB_POSITION) in vec3 aPosition;
+layout(location = ST_ATTRIB_UV) in vec2 aUv;
 out vec2 vUv;
 void main() {
     vUv = aUv;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
+    gl_Position = viewProj * vec4(aPosition, 1.0);  // world -> light clip of the cascade being drawn
 }

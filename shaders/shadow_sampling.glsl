@@ -1,22 +1,9 @@
-// Cascade selection, biasing and filtering of the shadow-map test. The CPU twin of the
-// selection rules is renderer/csm/selection.cpp; keep them in step.
+// Cascade selection, biasing and filtering of the shadow-map test, from CascadeBlock
+// (shaders/interface.h). The CPU twin of the selection rules is renderer/csm/selection.cpp;
+// tests/metrics compare the two on every pixel.
+#include "interface.h"
 layout(binding = ST_BINDING_SHADOW_NEAREST) uniform sampler2DArrayShadow uShadowNearest;
 layout(binding = ST_BINDING_SHADOW_LINEAR) uniform sampler2DArrayShadow uShadowLinear;
-
-uniform int uCascadeCount;
-uniform float uSplits[ST_MAX_CASCADES + 1];      // view depths, metres
-uniform mat4 uShadowMatrix[ST_MAX_CASCADES];     // world -> shadow texture space
-uniform float uTexelWorld[ST_MAX_CASCADES];      // metres per texel
-uniform float uDepthRange[ST_MAX_CASCADES];      // metres from light-box near to far
-uniform int uSelection;
-uniform float uBlendBand;
-uniform int uFilter;
-uniform int uFilterSize;
-uniform float uMapSize;
-uniform float uBiasConstant;   // metres
-uniform float uBiasSlope;      // texels per unit tan(angle)
-uniform float uNormalOffset;   // texels
-uniform bool uReceiverPlane;
 
 struct ShadowResult {
     float factor;  // 1 lit, 0 shadowed
@@ -24,8 +11,8 @@ struct ShadowResult {
 };
 
 vec3 shadowCoord(int i, vec3 wsPos, vec3 wsNormal) {
-    vec3 p = wsPos + wsNormal * (uNormalOffset * uTexelWorld[i]);
-    return (uShadowMatrix[i] * vec4(p, 1.0)).xyz;
+    vec3 p = wsPos + wsNormal * (normalOffset * cascade[i].texelWorld);
+    return (cascade[i].shadowMatrix * vec4(p, 1.0)).xyz;
 }
 
 // d(shadow texel)/d(screen pixel) of cascade i: the shadow matrix is affine, so the texel
@@ -33,7 +20,7 @@ vec3 shadowCoord(int i, vec3 wsPos, vec3 wsNormal) {
 // derivatives of the texel coordinate itself) keeps pixels whose 2x2 quad straddles two cascades
 // on their own cascade's figures.
 mat2 texelJacobian(int i, vec3 wsDx, vec3 wsDy) {
-    mat3 m = mat3(uShadowMatrix[i]) * uMapSize;
+    mat3 m = mat3(cascade[i].shadowMatrix) * float(mapSize);
     return mat2((m * wsDx).xy, (m * wsDy).xy);
 }
 
@@ -43,20 +30,20 @@ float screenPixelsPerTexel(mat2 j) { return 1.0 / max(abs(determinant(j)), 1e-12
 
 // Interval-based selection (seed 000, seed 004): the slice the view depth falls in.
 int selectInterval(float vsDepth) {
-    for (int i = 0; i < uCascadeCount; ++i)
-        if (vsDepth <= uSplits[i + 1]) return i;
+    for (int i = 0; i < cascadeCount; ++i)
+        if (vsDepth <= cascade[i].vsFar) return i;
     return -1;
 }
 
 float edgeMargin() {
-    float radius = uFilter == ST_FILTER_PCF_NXN ? float(uFilterSize / 2) + 1.0 : 1.0;
-    return radius / uMapSize;
+    float radius = filterKind == ST_FILTER_PCF_NXN ? float(filterSize / 2) + 1.0 : 1.0;
+    return radius / float(mapSize);
 }
 
 // Map-based selection (seed 003, seed 004): the first map whose tile holds the point.
 int selectMap(vec3 wsPos, vec3 wsNormal) {
     float m = edgeMargin();
-    for (int i = 0; i < uCascadeCount; ++i) {
+    for (int i = 0; i < cascadeCount; ++i) {
         vec3 ts = shadowCoord(i, wsPos, wsNormal);
         if (all(greaterThanEqual(ts, vec3(m, m, 0.0))) && all(lessThanEqual(ts, vec3(1.0 - m, 1.0 - m, 1.0))))
             return i;
@@ -83,8 +70,8 @@ float tanToLight(float nDotL) {
 
 // Constant + slope-scaled bias, turned from metres into cascade i's depth units.
 float biasedDepth(int i, float tsZ, float tanTheta) {
-    float biasMetres = uBiasConstant + uBiasSlope * uTexelWorld[i] * tanTheta;
-    return min(tsZ - biasMetres / uDepthRange[i], 1.0);
+    float biasMetres = biasConstant + biasSlope * cascade[i].texelWorld * tanTheta;
+    return min(tsZ - biasMetres / cascade[i].depthRange, 1.0);
 }
 
 // The unfiltered test: one nearest-texel compare with the bias, whatever the filter setting.
@@ -96,14 +83,14 @@ float hardShadow(int i, vec3 ts, float tanTheta) {
 
 float sampleCascade(int i, vec3 ts, vec2 dzduv, float tanTheta) {
     float z = biasedDepth(i, ts.z, tanTheta);
-    if (uFilter == ST_FILTER_HARD) return texture(uShadowNearest, vec4(ts.xy, float(i), z));
-    if (uFilter == ST_FILTER_PCF2X2) return texture(uShadowLinear, vec4(ts.xy, float(i), z));
-    int r = uFilterSize / 2;
+    if (filterKind == ST_FILTER_HARD) return texture(uShadowNearest, vec4(ts.xy, float(i), z));
+    if (filterKind == ST_FILTER_PCF2X2) return texture(uShadowLinear, vec4(ts.xy, float(i), z));
+    int r = filterSize / 2;
     float sum = 0.0;
     for (int y = -r; y <= r; ++y)
         for (int x = -r; x <= r; ++x) {
-            vec2 duv = vec2(x, y) / uMapSize;
-            float zt = uReceiverPlane ? z + dot(duv, dzduv) : z;
+            vec2 duv = vec2(x, y) / float(mapSize);
+            float zt = receiverPlane != 0 ? z + dot(duv, dzduv) : z;
             sum += texture(uShadowLinear, vec4(ts.xy + duv, float(i), zt));
         }
     return sum / float((2 * r + 1) * (2 * r + 1));
@@ -111,23 +98,23 @@ float sampleCascade(int i, vec3 ts, vec2 dzduv, float tanTheta) {
 
 // 0 in the cascade's interior, rising to 1 at its far end over the blend band (seed 004).
 float blendWeight(int i, float vsDepth, vec3 ts) {
-    if (uBlendBand <= 0.0 || i + 1 >= uCascadeCount) return 0.0;
+    if (blendBand <= 0.0 || i + 1 >= cascadeCount) return 0.0;
     float f;
-    if (uSelection == ST_SELECT_INTERVAL) {
-        f = (uSplits[i + 1] - vsDepth) / (uSplits[i + 1] - uSplits[i]);
+    if (selection == ST_SELECT_INTERVAL) {
+        f = (cascade[i].vsFar - vsDepth) / (cascade[i].vsFar - cascade[i].vsNear);
     } else {
         vec2 e = min(ts.xy, 1.0 - ts.xy);
         f = 2.0 * min(e.x, e.y);
     }
-    return 1.0 - clamp(f / uBlendBand, 0.0, 1.0);
+    return 1.0 - clamp(f / blendBand, 0.0, 1.0);
 }
 
 ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth) {
-    int c = uSelection == ST_SELECT_INTERVAL ? selectInterval(vsDepth) : selectMap(wsPos, wsNormal);
+    int c = selection == ST_SELECT_INTERVAL ? selectInterval(vsDepth) : selectMap(wsPos, wsNormal);
     // Coordinates and derivatives for c and c+1 are computed unconditionally: derivatives are
     // only defined in uniform control flow.
-    int ci = clamp(c, 0, uCascadeCount - 1);
-    int cn = min(ci + 1, uCascadeCount - 1);
+    int ci = clamp(c, 0, cascadeCount - 1);
+    int cn = min(ci + 1, cascadeCount - 1);
     vec3 ts = shadowCoord(ci, wsPos, wsNormal);
     vec3 tsNext = shadowCoord(cn, wsPos, wsNormal);
     vec2 slope = receiverPlaneSlope(ts);

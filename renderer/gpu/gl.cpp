@@ -73,7 +73,7 @@ GLuint compileStage(GLenum stage, const std::string& src, const std::string& nam
         char log[4096] = {};
         glGetShaderInfoLog(sh, sizeof log, nullptr, log);
         glDeleteShader(sh);
-        throw std::runtime_error("shader " + name + " failed to compile:\n" + log);
+        throw ShaderCompileError(stage, name, log);
     }
     return sh;
 }

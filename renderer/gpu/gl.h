@@ -3,6 +3,7 @@
 // in the spirit of Fwog: one owner per object, nothing leaks when settings reallocate.
 #include <epoxy/gl.h>
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -62,7 +63,15 @@ Query createQuery(GLenum target);
 // Number of GL objects alive that these wrappers created (tests check reallocation leaks none).
 int liveObjectCount();
 
-// Throws std::runtime_error with the info log if compiling or linking fails.
+// A stage failed to compile: the driver's info log as it is (source-string numbers, no names).
+struct ShaderCompileError : std::runtime_error {
+    ShaderCompileError(GLenum stageIn, const std::string& name, const std::string& logIn)
+        : std::runtime_error("shader " + name + " failed to compile:\n" + logIn), stage(stageIn), log(logIn) {}
+    GLenum stage;
+    std::string log;
+};
+
+// Throws ShaderCompileError if a stage fails to compile, std::runtime_error if linking fails.
 Program linkProgram(const std::string& vertexSrc, const std::string& fragmentSrc,
                     const std::string& name);
 

@@ -1,25 +1,31 @@
 #include "renderer/render/line_pass.h"
 
+#include "renderer/gpu/pass_state.h"
 #include "renderer/render/shader_library.h"
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include <cstddef>
 
 namespace st {
 
 LinePass::LinePass() {
-    program_ = gpu::linkProgram(shaderSource("lines.vert"), shaderSource("lines.frag"), "lines");
+    program_ = linkShaderFiles("lines.vert", "lines.frag", "lines");
     vao_ = gpu::createVertexArray();
-    for (GLuint a = 0; a < 2; ++a) {
-        glEnableVertexArrayAttrib(vao_.id(), a);
-        glVertexArrayAttribFormat(vao_.id(), a, 3, GL_FLOAT, GL_FALSE,
-                                  a == 0 ? offsetof(LineVertex, position) : offsetof(LineVertex, color));
-        glVertexArrayAttribBinding(vao_.id(), a, 0);
+    const GLuint locations[2] = {ST_ATTRIB_POSITION, ST_ATTRIB_COLOR};
+    const GLuint offsets[2] = {offsetof(LineVertex, position), offsetof(LineVertex, color)};
+    for (int i = 0; i < 2; ++i) {
+        glEnableVertexArrayAttrib(vao_.id(), locations[i]);
+        glVertexArrayAttribFormat(vao_.id(), locations[i], 3, GL_FLOAT, GL_FALSE, offsets[i]);
+        glVertexArrayAttribBinding(vao_.id(), locations[i], 0);
     }
+    gpu_if::OverlayBlock dim, bright;
+    dim.brightness = 0.35f;
+    bright.brightness = 1.0f;
+    hidden_.upload(dim);
+    visible_.upload(bright);
 }
 
-void LinePass::draw(const std::vector<LineVertex>& lines, const glm::mat4& viewProj) {
+void LinePass::draw(const std::vector<LineVertex>& lines, const glm::mat4& viewProj, GLuint framebuffer, int width,
+                    int height) {
     if (lines.empty()) return;
     gpu::DebugGroup group("wireframes");
     if (lines.size() > capacity_) {  // grow only; immutable storage is recreated
@@ -28,20 +34,22 @@ void LinePass::draw(const std::vector<LineVertex>& lines, const glm::mat4& viewP
         glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(LineVertex));
     }
     glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(lines.size() * sizeof(LineVertex)), lines.data());
+    view_.upload({viewProj});
+    view_.bind(ST_BLOCK_VIEW);
     glUseProgram(program_.id());
-    glProgramUniformMatrix4fv(program_.id(), glGetUniformLocation(program_.id(), "uViewProj"), 1, GL_FALSE,
-                              glm::value_ptr(viewProj));
     glBindVertexArray(vao_.id());
     // Hidden parts dim, visible parts bright: boxes below the ground stay readable.
-    GLint brightness = glGetUniformLocation(program_.id(), "uBrightness");
-    glDisable(GL_DEPTH_TEST);
-    glProgramUniform1f(program_.id(), brightness, 0.35f);
+    gpu::PassState state;
+    state.framebuffer = framebuffer;
+    state.viewport = {0, 0, width, height};
+    gpu::applyPassState(state);
+    hidden_.bind(ST_BLOCK_OVERLAY);
     glDrawArrays(GL_LINES, 0, GLsizei(lines.size()));
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glProgramUniform1f(program_.id(), brightness, 1.0f);
+    state.depthTest = true;
+    state.depthFunc = GL_LEQUAL;
+    gpu::applyPassState(state);
+    visible_.bind(ST_BLOCK_OVERLAY);
     glDrawArrays(GL_LINES, 0, GLsizei(lines.size()));
-    glDepthFunc(GL_LESS);
 }
 
 }  // namespace st

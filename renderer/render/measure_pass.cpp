@@ -1,20 +1,14 @@
 #include "renderer/render/measure_pass.h"
 
+#include "renderer/gpu/pass_state.h"
 #include "renderer/render/shader_library.h"
-#include "renderer/render/shadow_uniforms.h"
-#include "shaders/limits.h"
-
-#include <glm/gtc/type_ptr.hpp>
+#include "shaders/interface.h"
 
 #include <algorithm>
 
 namespace st {
-namespace {
-GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
-}  // namespace
-
 MeasurePass::MeasurePass() {
-    program_ = gpu::linkProgram(shaderSource("main.vert"), shaderSource("measure.frag"), "measure");
+    program_ = linkShaderFiles("main.vert", "measure.frag", "measure");
 }
 
 void MeasurePass::ensureTargets(int width, int height) {
@@ -36,29 +30,23 @@ void MeasurePass::ensureTargets(int width, int height) {
 }
 
 // The main pass's state (depth test, back-face culling per material) so coverage is the same.
-void MeasurePass::draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) const {
-    GLuint p = program_.id();
-    const csm::CascadePlan& plan = r.plan();
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, width_, height_);
+void MeasurePass::draw(const Renderer& r, const glm::mat4& observerViewProj) {
+    gpu::PassState state;
+    state.framebuffer = fbo_.id();
+    state.viewport = {0, 0, width_, height_};
+    state.depthTest = state.depthWrite = true;
+    state.cullFace = GL_BACK;
+    gpu::applyPassState(state);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
     const float far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glUseProgram(p);
-    glm::vec3 toSun = -plan.wsLightDir;
-    glProgramUniformMatrix4fv(p, loc(p, "uView"), 1, GL_FALSE, glm::value_ptr(plan.vsView));
-    glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(observerViewProj));
-    glProgramUniform3fv(p, loc(p, "uWsToSun"), 1, glm::value_ptr(toSun));
-    setShadowUniforms(p, s, plan);
-    r.shadowMaps().bindForSampling();
+    glUseProgram(program_.id());
+    view_.upload({observerViewProj});
+    view_.bind(ST_BLOCK_VIEW);
+    r.bindShadingInputs();
     r.sceneGpu().bindGeometry();
-    glCullFace(GL_BACK);
-    for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(p, item, true);
-    glDisable(GL_CULL_FACE);
+    for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(item, FaceCulling::PerMaterial);
     glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
     glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
 }
@@ -79,7 +67,7 @@ std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture) const {
 MeasureSamples MeasurePass::run(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) {
     gpu::DebugGroup group("measure pass");
     ensureTargets(s.output.width, s.output.height);
-    draw(r, s, observerViewProj);
+    draw(r, observerViewProj);
     return {width_, height_, read(targets_[0]), read(targets_[1]), read(targets_[2]), read(targets_[3])};
 }
 
@@ -87,7 +75,7 @@ std::vector<glm::vec4> MeasurePass::runShadowOnly(const Renderer& r, const Setti
                                                   const glm::mat4& observerViewProj) {
     gpu::DebugGroup group("measure pass (shadow only)");
     ensureTargets(s.output.width, s.output.height);
-    draw(r, s, observerViewProj);
+    draw(r, observerViewProj);
     return read(targets_[2]);
 }
 

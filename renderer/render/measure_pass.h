@@ -3,9 +3,11 @@
 // position, normal, the unfiltered and the filtered shadow result, the cascade and the texel
 // density into float targets (shaders/measure.frag), then read back for the metrics.
 #include "renderer/gpu/gl.h"
+#include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/measure_samples.h"
 #include "renderer/render/renderer.h"
 #include "renderer/settings/settings.h"
+#include "shaders/interface.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -29,13 +31,14 @@ public:
 
 private:
     void ensureTargets(int width, int height);
-    void draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) const;
+    void draw(const Renderer& r, const glm::mat4& observerViewProj);
     std::vector<glm::vec4> read(const gpu::Texture& texture) const;
 
     gpu::Program program_;
     gpu::Texture targets_[4];  // position, normal, shadow, geometry (RGBA32F)
     gpu::Texture depth_;
     gpu::Framebuffer fbo_;
+    gpu::UniformBuffer<gpu_if::ViewBlock> view_;
     int width_ = 0;
     int height_ = 0;
 };

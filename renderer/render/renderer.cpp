@@ -1,33 +1,17 @@
 #include "renderer/render/renderer.h"
 
-#include "renderer/csm/conventions.h"
 #include "renderer/csm/culling.h"
+#include "renderer/render/shader_blocks.h"
 #include "renderer/render/shader_library.h"
-#include "renderer/render/shadow_uniforms.h"
-#include "shaders/limits.h"
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include <chrono>
+#include <string>
 
 namespace st {
-namespace {
-GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
-
-int viewCode(View v) {
-    switch (v) {
-    case View::Cascades: return ST_VIEW_CASCADES;
-    case View::Shadow: return ST_VIEW_SHADOW;
-    case View::TexelDensity: return ST_VIEW_TEXEL_DENSITY;
-    default: return ST_VIEW_SHADED;
-    }
-}
-}  // namespace
 
 Renderer::Renderer(const Scene& scene) : scene_(scene) {
-    depthProgram_ = gpu::linkProgram(shaderSource("shadow_depth.vert"),
-                                     shaderSource("shadow_depth.frag"), "shadow_depth");
-    mainProgram_ = gpu::linkProgram(shaderSource("main.vert"), shaderSource("main.frag"), "main");
+    depthProgram_ = linkShaderFiles("shadow_depth.vert", "shadow_depth.frag", "shadow_depth");
+    mainProgram_ = linkShaderFiles("main.vert", "main.frag", "main");
 }
 
 FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
@@ -42,8 +26,9 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     target_.ensure(s.output.width, s.output.height);
     shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
     stats.shadowMapBytes = shadowMaps_.bytes();
+    frameBlock_.upload(frameBlock(s, plan_));
+    cascadeBlock_.upload(cascadeBlock(s, plan_));
     timers_.beginFrame(s.cascades.count + 1);
-    scene_.bindGeometry();
     shadowPass(s, stats);
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
@@ -60,38 +45,47 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
 
 void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
     gpu::DebugGroup group("shadow pass");
-    GLuint prog = depthProgram_.id();
-    glUseProgram(prog);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);  // thin and open casters must cast from both sides
-    bool pancake = s.cascades.zExtension == ZExtension::Pancake;
-    if (pancake) glEnable(GL_DEPTH_CLAMP);
+    const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
+    gpu::PassState state;
+    state.framebuffer = shadowMaps_.framebuffer();
+    state.viewport = {0, 0, shadowMaps_.size(), shadowMaps_.size()};
+    state.depthTest = state.depthWrite = true;
+    state.cullFace = GL_NONE;  // thin and open casters must cast from both sides
+    state.depthClamp = pancake;
+    state.colorWrite = false;  // depth only
+    gpu::applyPassState(state);
+    glUseProgram(depthProgram_.id());
+    scene_.bindGeometry();
+    frameBlock_.bind(ST_BLOCK_FRAME);
+    viewBlock_.bind(ST_BLOCK_VIEW);
     for (int i = 0; i < s.cascades.count; ++i) {
+        const std::string name = "cascade " + std::to_string(i);
+        gpu::DebugGroup cascadeGroup(name.c_str());
         const csm::CascadeFit& fit = plan_.cascades[i];
         CascadeStats cs{fit.vsNear, fit.vsFar, fit.lsBox.extent(), fit.texelWorldSize};
         timers_.begin(i);
-        shadowMaps_.bindLayerForWriting(i);
+        shadowMaps_.attachLayer(i);
         glClear(GL_DEPTH_BUFFER_BIT);
-        glProgramUniformMatrix4fv(prog, loc(prog, "uViewProj"), 1, GL_FALSE, glm::value_ptr(fit.viewProj));
+        viewBlock_.upload({fit.viewProj});
         for (const DrawItem& item : scene_.scene().draws) {
             if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
-            scene_.draw(prog, item, false);
+            scene_.draw(item, FaceCulling::Keep);
             ++cs.casterDraws;
             cs.casterTriangles += item.indexCount / 3;
         }
         timers_.end(i);
         stats.cascades.push_back(cs);
     }
-    glDisable(GL_DEPTH_CLAMP);
 }
 
-void Renderer::setShadowUniforms(const Settings& s) const { st::setShadowUniforms(mainProgram_.id(), s, plan_); }
+void Renderer::bindShadingInputs() const {
+    frameBlock_.bind(ST_BLOCK_FRAME);
+    cascadeBlock_.bind(ST_BLOCK_CASCADES);
+    shadowMaps_.bindForSampling();
+}
 
 void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out) {
     timers_.beginFrame(s.cascades.count + 1);
-    scene_.bindGeometry();
     sidePass(s, orbit, out);
 }
 
@@ -104,31 +98,30 @@ void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const Offsc
     csm::CameraParams cam = sideCamera(plan_, orbit, float(target.width()) / float(target.height()));
     glm::mat4 viewProj = csm::projectionMatrix(cam) * csm::viewMatrix(cam);
     mainPass(s, viewProj, target);
-    target.bind();
-    lines_.draw(cascadeWireframes(plan_), viewProj);
+    lines_.draw(cascadeWireframes(plan_), viewProj, target.framebuffer(), target.width(), target.height());
+}
+
+gpu::PassState Renderer::mainPassState(const OffscreenTarget& target) {
+    gpu::PassState state;
+    state.framebuffer = target.framebuffer();
+    state.viewport = {0, 0, target.width(), target.height()};
+    state.depthTest = state.depthWrite = true;
+    state.cullFace = GL_BACK;  // per material: double-sided ones draw both sides
+    return state;
 }
 
 void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target) {
     gpu::DebugGroup group("main pass");
-    GLuint p = mainProgram_.id();
     timers_.begin(s.cascades.count);
-    target.bind();
+    gpu::applyPassState(mainPassState(target));
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(p);
+    glUseProgram(mainProgram_.id());
     scene_.bindGeometry();
-    glm::vec3 toSun = -plan_.wsLightDir;
-    glProgramUniformMatrix4fv(p, loc(p, "uView"), 1, GL_FALSE, glm::value_ptr(plan_.vsView));
-    glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
-    glProgramUniform3fv(p, loc(p, "uWsToSun"), 1, glm::value_ptr(toSun));
-    glProgramUniform1f(p, loc(p, "uIntensity"), s.light.intensity);
-    glProgramUniform1f(p, loc(p, "uAmbient"), s.light.ambient);
-    glProgramUniform1i(p, loc(p, "uViewMode"), viewCode(s.output.view));
-    setShadowUniforms(s);
-    shadowMaps_.bindForSampling();
-    glCullFace(GL_BACK);
-    for (const DrawItem& item : scene_.scene().draws) scene_.draw(p, item, true);
-    glDisable(GL_CULL_FACE);
+    viewBlock_.upload({viewProj});
+    viewBlock_.bind(ST_BLOCK_VIEW);
+    bindShadingInputs();
+    for (const DrawItem& item : scene_.scene().draws) scene_.draw(item, FaceCulling::PerMaterial);
     glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
     glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
     timers_.end(s.cascades.count);

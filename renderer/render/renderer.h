@@ -4,6 +4,8 @@
 // the pixels back, the editor blits or shows the texture.
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/gpu/gl.h"
+#include "renderer/gpu/pass_state.h"
+#include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/frame_stats.h"
 #include "renderer/render/gpu_timer.h"
 #include "renderer/render/line_pass.h"
@@ -13,6 +15,7 @@
 #include "renderer/render/side_view.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
+#include "shaders/interface.h"
 
 #include <cstdint>
 #include <vector>
@@ -40,6 +43,9 @@ public:
     GLuint shadowMapTexture() const { return shadowMaps_.texture(); }
     GLuint depthTexture() const { return target_.depthTexture(); }  // main pass depth, D32F
     const csm::CascadePlan& plan() const { return plan_; }  // of the last render()
+    // Binds the frame and cascade blocks of the last render() (ST_BLOCK_FRAME, ST_BLOCK_CASCADES)
+    // and the shadow maps, for a pass that shades with them (the measurement pass).
+    void bindShadingInputs() const;
     const SceneGpu& sceneGpu() const { return scene_; }
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
     int width() const { return target_.width(); }
@@ -51,7 +57,7 @@ private:
     // main camera's cascades.
     void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target);
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
-    void setShadowUniforms(const Settings& s) const;
+    static gpu::PassState mainPassState(const OffscreenTarget& target);
 
     SceneGpu scene_;
     gpu::Program depthProgram_;
@@ -61,6 +67,9 @@ private:
     LinePass lines_;
     OffscreenTarget target_;
     csm::CascadePlan plan_;
+    gpu::UniformBuffer<gpu_if::FrameBlock> frameBlock_;
+    gpu::UniformBuffer<gpu_if::CascadeBlock> cascadeBlock_;
+    gpu::UniformBuffer<gpu_if::ViewBlock> viewBlock_;
 };
 
 }  // namespace st

@@ -1,8 +1,11 @@
 #include "renderer/render/scene_gpu.h"
 
-#include "shaders/limits.h"
+#include "renderer/render/shader_blocks.h"
+#include "shaders/interface.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 
 namespace st {
 namespace {
@@ -18,6 +21,13 @@ gpu::Texture uploadImage(const Image& img) {
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     return t;
 }
+
+GLsizeiptr uniformStride(std::size_t bytes) {
+    GLint align = 256;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+    const auto a = static_cast<GLsizeiptr>(std::max(align, 1));
+    return (static_cast<GLsizeiptr>(bytes) + a - 1) / a * a;
+}
 }  // namespace
 
 SceneGpu::SceneGpu(const Scene& scene) : scene_(&scene) {
@@ -29,33 +39,47 @@ SceneGpu::SceneGpu(const Scene& scene) : scene_(&scene) {
     GLuint v = vao_.id();
     glVertexArrayVertexBuffer(v, 0, vertices_.id(), 0, sizeof(Vertex));
     glVertexArrayElementBuffer(v, indices_.id());
-    const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-    const GLint sizes[3] = {3, 3, 2};
-    for (GLuint a = 0; a < 3; ++a) {
-        glEnableVertexArrayAttrib(v, a);
-        glVertexArrayAttribFormat(v, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-        glVertexArrayAttribBinding(v, a, 0);
+    struct Attrib { GLuint location; GLint size; GLuint offset; };
+    const Attrib attribs[3] = {{ST_ATTRIB_POSITION, 3, offsetof(Vertex, position)},
+                               {ST_ATTRIB_NORMAL, 3, offsetof(Vertex, normal)},
+                               {ST_ATTRIB_UV, 2, offsetof(Vertex, uv)}};
+    for (const Attrib& a : attribs) {
+        glEnableVertexArrayAttrib(v, a.location);
+        glVertexArrayAttribFormat(v, a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
+        glVertexArrayAttribBinding(v, a.location, 0);
     }
     for (const Image& img : scene.images) textures_.push_back(uploadImage(img));
     white_ = uploadImage(Image{1, 1, {255, 255, 255, 255}});
+
+    std::vector<Material> materials = scene.materials;
+    materials.push_back(Material{});  // for draws whose index is out of range
+    materialStride_ = uniformStride(sizeof(gpu_if::MaterialBlock));
+    std::vector<std::byte> blocks(static_cast<std::size_t>(materialStride_) * materials.size());
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const Material& m = materials[i];
+        const bool textured = m.baseColorTexture >= 0 && m.baseColorTexture < static_cast<int>(textures_.size());
+        const gpu_if::MaterialBlock b = materialBlock(m, textured);
+        std::memcpy(blocks.data() + i * static_cast<std::size_t>(materialStride_), &b, sizeof b);
+        materialDoubleSided_.push_back(m.doubleSided);
+        materialTexture_.push_back(textured ? textures_[static_cast<std::size_t>(m.baseColorTexture)].id() : white_.id());
+    }
+    materials_ = gpu::createBuffer(blocks.data(), static_cast<GLsizeiptr>(blocks.size()));
 }
 
 void SceneGpu::bindGeometry() const { glBindVertexArray(vao_.id()); }
 
-void SceneGpu::draw(GLuint program, const DrawItem& item, bool cullBackFaces) const {
-    static const Material kDefault;
-    const Material& m = item.material >= 0 && item.material < static_cast<int>(scene_->materials.size())
-                            ? scene_->materials[item.material]
-                            : kDefault;
-    bool textured = m.baseColorTexture >= 0 && m.baseColorTexture < static_cast<int>(textures_.size());
-    glBindTextureUnit(ST_BINDING_BASE_COLOR, textured ? textures_[m.baseColorTexture].id() : white_.id());
-    glProgramUniform4fv(program, glGetUniformLocation(program, "uBaseColor"), 1, &m.baseColor.x);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uBaseAlpha"), m.baseColor.a);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uHasTexture"), textured);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uAlphaMask"), m.alphaMask);
-    glProgramUniform1f(program, glGetUniformLocation(program, "uAlphaCutoff"), m.alphaCutoff);
-    if (cullBackFaces) {
-        if (m.doubleSided) glDisable(GL_CULL_FACE);
+int SceneGpu::materialIndex(const DrawItem& item) const {
+    const int count = static_cast<int>(scene_->materials.size());
+    return item.material >= 0 && item.material < count ? item.material : count;
+}
+
+void SceneGpu::draw(const DrawItem& item, FaceCulling culling) const {
+    const auto m = static_cast<std::size_t>(materialIndex(item));
+    glBindBufferRange(GL_UNIFORM_BUFFER, ST_BLOCK_MATERIAL, materials_.id(),
+                      static_cast<GLintptr>(m) * materialStride_, sizeof(gpu_if::MaterialBlock));
+    glBindTextureUnit(ST_BINDING_BASE_COLOR, materialTexture_[m]);
+    if (culling == FaceCulling::PerMaterial) {
+        if (materialDoubleSided_[m]) glDisable(GL_CULL_FACE);
         else glEnable(GL_CULL_FACE);
     }
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(item.indexCount), GL_UNSIGNED_INT,

@@ -1,13 +1,15 @@
 #include "renderer/render/shadow_map_view.h"
 
+#include "renderer/gpu/pass_state.h"
 #include "renderer/render/shader_library.h"
+#include "shaders/interface.h"
 
 #include <algorithm>
 
 namespace st {
 
 ShadowMapView::ShadowMapView() {
-    program_ = gpu::linkProgram(shaderSource("fullscreen.vert"), shaderSource("depth_view.frag"), "depth_view");
+    program_ = linkShaderFiles("fullscreen.vert", "depth_view.frag", "depth_view");
     emptyVao_ = gpu::createVertexArray();
     fbo_ = gpu::createFramebuffer();
     raw_ = gpu::createSampler();
@@ -32,29 +34,29 @@ void ShadowMapView::update(const ShadowMaps& maps, const csm::CascadePlan& plan,
         tiles_.push_back(gpu::createTexture(GL_TEXTURE_2D));
         glTextureStorage2D(tiles_.back().id(), 1, GL_RGBA8, tileSize, tileSize);
     }
-    GLuint p = program_.id();
-    glUseProgram(p);
+    glUseProgram(program_.id());
     glBindVertexArray(emptyVao_.id());
-    glBindTextureUnit(0, maps.texture());
-    glBindSampler(0, raw_.id());
-    glDisable(GL_DEPTH_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, tileSize, tileSize);
+    glBindTextureUnit(ST_BINDING_DEPTH_VIEW, maps.texture());
+    glBindSampler(ST_BINDING_DEPTH_VIEW, raw_.id());
+    gpu::PassState state;
+    state.framebuffer = fbo_.id();
+    state.viewport = {0, 0, tileSize, tileSize};
+    gpu::applyPassState(state);
     for (int i = 0; i < maps.layers(); ++i) {
         // Where the scene lies inside this light box, as stored depth (0 = the sun's side).
         const csm::CascadeFit& f = plan.cascades[i];
         csm::Aabb ls = csm::transformAabb(f.lsView, wsSceneBounds);
         float range = std::max(f.lsBox.extent().z, 1e-6f);
-        float lo = std::clamp((f.lsBox.max.z - ls.max.z) / range, 0.0f, 1.0f);
-        float hi = std::clamp((f.lsBox.max.z - ls.min.z) / range, 0.0f, 1.0f);
+        gpu_if::OverlayBlock tile;
+        tile.layer = i;
+        tile.depthLo = std::clamp((f.lsBox.max.z - ls.max.z) / range, 0.0f, 1.0f);
+        tile.depthHi = std::clamp((f.lsBox.max.z - ls.min.z) / range, 0.0f, 1.0f);
+        overlay_.upload(tile);
+        overlay_.bind(ST_BLOCK_OVERLAY);
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tiles_[i].id(), 0);
-        glProgramUniform1i(p, glGetUniformLocation(p, "uLayer"), i);
-        glProgramUniform1f(p, glGetUniformLocation(p, "uLo"), lo);
-        glProgramUniform1f(p, glGetUniformLocation(p, "uHi"), hi);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    glBindSampler(0, 0);
-    glEnable(GL_DEPTH_TEST);
+    glBindSampler(ST_BINDING_DEPTH_VIEW, 0);
 }
 
 }  // namespace st

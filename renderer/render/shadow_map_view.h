@@ -3,7 +3,10 @@
 // occupies stretched to a visible grey ramp, for the editor's shadow-map viewer.
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/gpu/gl.h"
+#include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/shadow_maps.h"
+
+#include "shaders/interface.h"
 
 #include <vector>
 
@@ -22,6 +25,7 @@ private:
     gpu::VertexArray emptyVao_;
     gpu::Framebuffer fbo_;
     gpu::Sampler raw_;  // no depth compare: read the stored depth itself
+    gpu::UniformBuffer<gpu_if::OverlayBlock> overlay_;
     std::vector<gpu::Texture> tiles_;
     // Tiles replaced by the last update(), kept one more update: a UI draw list recorded before
     // this frame's update() may still name them.

@@ -1,6 +1,6 @@
 #include "renderer/render/shadow_maps.h"
 
-#include "shaders/limits.h"
+#include "shaders/interface.h"
 
 namespace st {
 namespace {
@@ -31,11 +31,9 @@ void ShadowMaps::ensure(int layers, int size) {
     size_ = size;
 }
 
-void ShadowMaps::bindLayerForWriting(int layer) const {
+void ShadowMaps::attachLayer(int layer) const {
     glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
     glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, size_, size_);
 }
 
 void ShadowMaps::bindForSampling() const {

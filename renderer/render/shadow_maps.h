@@ -10,7 +10,8 @@ namespace st {
 class ShadowMaps {
 public:
     void ensure(int layers, int size);  // (re)allocates when layers or size differ
-    void bindLayerForWriting(int layer) const;
+    void attachLayer(int layer) const;  // as the depth attachment of framebuffer()
+    GLuint framebuffer() const { return fbo_.id(); }
     void bindForSampling() const;       // array on both shadow bindings, nearest + linear compare
     GLuint texture() const { return depth_.id(); }
     int layers() const { return layers_; }

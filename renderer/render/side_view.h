@@ -28,7 +28,8 @@ csm::CameraParams sideCamera(const csm::CascadePlan& plan, const OrbitCamera& or
 // GL_LINES vertex pairs: main frustum (white) with its split planes (tinted), light boxes (tinted).
 std::vector<LineVertex> cascadeWireframes(const csm::CascadePlan& plan);
 
-// The tints of the cascades view (shaders/main.frag), linear RGB.
+// The one table of cascade tints, linear RGB: the cascades view reads them from CascadeData::tint
+// (shaders/interface.h), the wireframes and the editor's legends from here.
 glm::vec3 cascadeTint(int cascade);
 
 }  // namespace st

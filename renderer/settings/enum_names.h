@@ -1,6 +1,7 @@
 #pragma once
-// JSON names of the settings enums: lowercase-kebab, in enumerator order (index == value).
-// The field table, the JSON reader/writer, the schema and the UI all take names from here.
+// Helpers over the settings enums' JSON names, which settings.h declares next to each enum
+// (EnumNames<E>::names, index == value). The field table, the JSON reader/writer, the schema and
+// the UI all take names through these.
 #include "renderer/settings/settings.h"
 
 #include <array>
@@ -11,34 +12,6 @@
 #include <string_view>
 
 namespace st {
-
-template <class E>
-struct EnumNames;  // specialised below; `names[i]` is the JSON name of enumerator value i
-
-template <>
-struct EnumNames<SplitScheme> {
-    static constexpr std::array<std::string_view, 4> names{"uniform", "logarithmic", "practical", "manual"};
-};
-template <>
-struct EnumNames<FitMode> {
-    static constexpr std::array<std::string_view, 3> names{"cascade", "scene", "sphere"};
-};
-template <>
-struct EnumNames<ZExtension> {
-    static constexpr std::array<std::string_view, 4> names{"none", "distance", "scene-bounds", "pancake"};
-};
-template <>
-struct EnumNames<Selection> {
-    static constexpr std::array<std::string_view, 2> names{"interval", "map"};
-};
-template <>
-struct EnumNames<FilterKind> {
-    static constexpr std::array<std::string_view, 3> names{"hard", "pcf2x2", "pcf-nxn"};
-};
-template <>
-struct EnumNames<View> {
-    static constexpr std::array<std::string_view, 5> names{"shaded", "cascades", "shadow", "texel-density", "side"};
-};
 
 template <class E>
 constexpr std::span<const std::string_view> enumNames() {

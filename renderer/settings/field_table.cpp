@@ -74,10 +74,10 @@ std::vector<FieldInfo> lightRows() {
          .unit = "deg", .kind = K::Float, .min = -90, .max = 90, .step = 1, ST_FIELD_ACCESS(light.elevation)},
         {.path = "light.intensity", .label = "Sun intensity",
          .help = "Scales the direct light so shadow contrast can be judged against the ambient term.",
-         .kind = K::Float, .min = 0, .max = 10, .step = 0.01, ST_FIELD_ACCESS(light.intensity)},
+         .kind = K::Float, .min = 0, .max = 10, .step = 0.01, .shader = "intensity", ST_FIELD_ACCESS(light.intensity)},
         {.path = "light.ambient", .label = "Ambient",
          .help = "Constant, never shadowed light that keeps shadowed areas readable.",
-         .kind = K::Float, .min = 0, .max = 1, .step = 0.01, ST_FIELD_ACCESS(light.ambient)},
+         .kind = K::Float, .min = 0, .max = 1, .step = 0.01, .shader = "ambient", ST_FIELD_ACCESS(light.ambient)},
     };
 }
 
@@ -85,7 +85,7 @@ std::vector<FieldInfo> cascadeSplitRows() {
     return {
         {.path = "cascades.count", .label = "Cascades",
          .help = "More cascades spread shadow map resolution more evenly over depth, at one shadow pass each.",
-         .kind = K::Int, .min = 1, .max = 8, .step = 1, .change = C::Reallocate, ST_FIELD_ACCESS(cascades.count)},
+         .kind = K::Int, .min = 1, .max = kMaxCascades, .step = 1, .change = C::Reallocate, .shader = "cascadeCount", ST_FIELD_ACCESS(cascades.count)},
         {.path = "cascades.scheme", .label = "Split scheme",
          .help = "How the view depth range is divided: uniform, logarithmic, their lambda blend, or manual depths.",
          .kind = K::Enum, .enumNames = enumNames<SplitScheme>(), ST_FIELD_ACCESS(cascades.scheme)},
@@ -102,7 +102,7 @@ std::vector<FieldInfo> cascadeSplitRows() {
         {.path = "cascades.mapSize", .label = "Map size",
          .help = "Texels per side of each cascade's map; doubling halves the texel footprint at 4x the memory.",
          .unit = "texels", .kind = K::Int, .min = 256, .max = 8192, .step = 1, .powerOfTwo = true,
-         .change = C::Reallocate, ST_FIELD_ACCESS(cascades.mapSize)},
+         .change = C::Reallocate, .shader = "mapSize", ST_FIELD_ACCESS(cascades.mapSize)},
     };
 }
 
@@ -122,10 +122,10 @@ std::vector<FieldInfo> cascadeFitRows() {
          .unit = "m", .kind = K::Float, .min = 0, .max = 1e5, .step = 1, ST_FIELD_ACCESS(cascades.zExtensionDistance)},
         {.path = "cascades.selection", .label = "Selection",
          .help = "How a pixel picks its cascade: by view-depth interval, or the first map whose box contains it.",
-         .kind = K::Enum, .enumNames = enumNames<Selection>(), ST_FIELD_ACCESS(cascades.selection)},
+         .kind = K::Enum, .enumNames = enumNames<Selection>(), .shader = "selection", ST_FIELD_ACCESS(cascades.selection)},
         {.path = "cascades.blendBand", .label = "Blend band",
          .help = "Fraction of each cascade's depth range cross-faded into the next, to hide the seam between them.",
-         .kind = K::Float, .min = 0, .max = 0.5, .step = 0.01, ST_FIELD_ACCESS(cascades.blendBand)},
+         .kind = K::Float, .min = 0, .max = 0.5, .step = 0.01, .shader = "blendBand", ST_FIELD_ACCESS(cascades.blendBand)},
     };
 }
 
@@ -133,22 +133,22 @@ std::vector<FieldInfo> filterAndBiasRows() {
     return {
         {.path = "filter.kind", .label = "Filter",
          .help = "Shadow edge filtering: one hard tap, the hardware 2x2 comparison, or an NxN grid of taps.",
-         .kind = K::Enum, .enumNames = enumNames<FilterKind>(), ST_FIELD_ACCESS(filter.kind)},
+         .kind = K::Enum, .enumNames = enumNames<FilterKind>(), .shader = "filterKind", ST_FIELD_ACCESS(filter.kind)},
         {.path = "filter.size", .label = "Filter size",
          .help = "Taps per side of the NxN filter; larger softens edges and hides aliasing at quadratic cost.",
-         .unit = "taps", .kind = K::Int, .min = 3, .max = 9, .step = 2, .odd = true, ST_FIELD_ACCESS(filter.size)},
+         .unit = "taps", .kind = K::Int, .min = 3, .max = 9, .step = 2, .odd = true, .shader = "filterSize", ST_FIELD_ACCESS(filter.size)},
         {.path = "bias.constant", .label = "Constant bias",
          .help = "Moves receivers toward the light to remove acne; too much detaches shadows (peter-panning).",
-         .unit = "m", .kind = K::Float, .min = 0, .max = 10, .step = 0.001, ST_FIELD_ACCESS(bias.constant)},
+         .unit = "m", .kind = K::Float, .min = 0, .max = 10, .step = 0.001, .shader = "biasConstant", ST_FIELD_ACCESS(bias.constant)},
         {.path = "bias.slope", .label = "Slope bias",
          .help = "Bias that grows with the tangent of the angle to the light, where acne is worst.",
-         .unit = "texels", .kind = K::Float, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.slope)},
+         .unit = "texels", .kind = K::Float, .min = 0, .max = 100, .step = 0.01, .shader = "biasSlope", ST_FIELD_ACCESS(bias.slope)},
         {.path = "bias.normalOffset", .label = "Normal offset",
          .help = "Moves receivers along their normal, removing acne with less peter-panning than depth bias.",
-         .unit = "texels", .kind = K::Float, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.normalOffset)},
+         .unit = "texels", .kind = K::Float, .min = 0, .max = 100, .step = 0.01, .shader = "normalOffset", ST_FIELD_ACCESS(bias.normalOffset)},
         {.path = "bias.receiverPlane", .label = "Receiver-plane bias",
          .help = "Derives depth bias from screen-space depth derivatives, which suits large filter kernels.",
-         .kind = K::Bool, ST_FIELD_ACCESS(bias.receiverPlane)},
+         .kind = K::Bool, .shader = "receiverPlane", ST_FIELD_ACCESS(bias.receiverPlane)},
     };
 }
 
@@ -164,7 +164,7 @@ std::vector<FieldInfo> outputRows() {
          ST_FIELD_ACCESS(output.height)},
         {.path = "output.view", .label = "View",
          .help = "Shaded scene, cascade colours, shadow term, pixels per shadow texel, or a side view of the light boxes.",
-         .kind = K::Enum, .enumNames = enumNames<View>(), ST_FIELD_ACCESS(output.view)},
+         .kind = K::Enum, .enumNames = enumNames<View>(), .shader = "viewMode", ST_FIELD_ACCESS(output.view)},
     };
 }
 

@@ -48,6 +48,9 @@ struct FieldInfo {
     bool odd = false;         // Int: must be odd (UI steps by 2)
     bool nonEmpty = false;    // String: must not be empty
     ChangeClass change = ChangeClass::Uniform;
+    // The uniform-block member of shaders/interface.h this field is copied into, by the same
+    // name in C++ and GLSL (renderer/render/shader_blocks.cpp); "" when no shader reads it as is.
+    std::string_view shader;
     FieldValue (*get)(const Settings&) = nullptr;
     // Stores `value` into the field; throws std::bad_variant_access if the alternative does not
     // match `kind` (see FieldValue). Does not validate: call validate() afterwards.

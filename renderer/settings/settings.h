@@ -3,28 +3,101 @@
 // renderer consumes it and headless replay loads it. No GL, no JSON here: plain data only.
 // Every field listed here has a row in field_table.cpp (label, range, unit, help); a field that
 // is missing there is a bug (tests/settings checks the table covers the JSON round trip).
+#include "shaders/codes.h"
+
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace st {
 
-enum class SplitScheme { Uniform, Logarithmic, Practical, Manual };
+// Each enum's values are the codes of shaders/codes.h (the shaders read them as ints), and its
+// JSON names sit next to it: EnumNames<E>::names[i] names the enumerator of value i
+// (lowercase-kebab; enum_names.h has the helpers). The static_asserts tie the three together.
+template <class E>
+struct EnumNames;
+
+enum class SplitScheme {
+    Uniform = ST_SPLIT_UNIFORM,
+    Logarithmic = ST_SPLIT_LOGARITHMIC,
+    Practical = ST_SPLIT_PRACTICAL,
+    Manual = ST_SPLIT_MANUAL,
+};
+template <>
+struct EnumNames<SplitScheme> {
+    static constexpr std::array<std::string_view, ST_SPLIT_COUNT> names{"uniform", "logarithmic", "practical", "manual"};
+};
+
 // Cascade: tight light-space AABB of each slice (crop matrix, seeds 000/002).
 // Scene: every cascade starts at the camera near plane (seed 004 "fit to scene").
 // Sphere: bounding sphere of the slice, size constant under rotation (seed 001).
-enum class FitMode { Cascade, Scene, Sphere };
+enum class FitMode { Cascade = ST_FIT_CASCADE, Scene = ST_FIT_SCENE, Sphere = ST_FIT_SPHERE };
+template <>
+struct EnumNames<FitMode> {
+    static constexpr std::array<std::string_view, ST_FIT_COUNT> names{"cascade", "scene", "sphere"};
+};
+
 // How far the light box reaches toward the light beyond the slice itself.
 // Pancake: no extension, casters in front are clamped onto the near plane (depth clamp, seed 001).
-enum class ZExtension { None, Distance, SceneBounds, Pancake };
-enum class Selection { Interval, Map };  // seed 004: view depth vs first map that contains the point
-enum class FilterKind { Hard, Pcf2x2, PcfNxN };
+enum class ZExtension {
+    None = ST_ZEXT_NONE,
+    Distance = ST_ZEXT_DISTANCE,
+    SceneBounds = ST_ZEXT_SCENE_BOUNDS,
+    Pancake = ST_ZEXT_PANCAKE,
+};
+template <>
+struct EnumNames<ZExtension> {
+    static constexpr std::array<std::string_view, ST_ZEXT_COUNT> names{"none", "distance", "scene-bounds", "pancake"};
+};
+
+// Seed 004: view depth vs first map that contains the point.
+enum class Selection { Interval = ST_SELECT_INTERVAL, Map = ST_SELECT_MAP };
+template <>
+struct EnumNames<Selection> {
+    static constexpr std::array<std::string_view, ST_SELECT_COUNT> names{"interval", "map"};
+};
+
+enum class FilterKind { Hard = ST_FILTER_HARD, Pcf2x2 = ST_FILTER_PCF2X2, PcfNxN = ST_FILTER_PCF_NXN };
+template <>
+struct EnumNames<FilterKind> {
+    static constexpr std::array<std::string_view, ST_FILTER_COUNT> names{"hard", "pcf2x2", "pcf-nxn"};
+};
+
 // TexelDensity: screen pixels per shadow texel as a heat map (blue < 1/4 wasted, green 1 ideal,
-// red > 1 perspective aliasing; DESIGN.md "Aliasing / texel density").
+// red > 1 perspective aliasing; docs/architecture.md "Texel density").
 // Side: the frame from an outside orbit camera with the main frustum, its split planes and each
 // cascade's light box as wireframes.
-enum class View { Shaded, Cascades, Shadow, TexelDensity, Side };
+enum class View {
+    Shaded = ST_VIEW_SHADED,
+    Cascades = ST_VIEW_CASCADES,
+    Shadow = ST_VIEW_SHADOW,
+    TexelDensity = ST_VIEW_TEXEL_DENSITY,
+    Side = ST_VIEW_SIDE,
+};
+template <>
+struct EnumNames<View> {
+    static constexpr std::array<std::string_view, ST_VIEW_COUNT> names{"shaded", "cascades", "shadow", "texel-density", "side"};
+};
+
+// The codes of an enum run 0..COUNT-1 with no gap, so a value indexes its name table and a code
+// read from a file is valid exactly when it is below the table's size.
+static_assert(int(SplitScheme::Manual) == ST_SPLIT_COUNT - 1 && int(SplitScheme::Uniform) == 0);
+static_assert(int(FitMode::Sphere) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
+static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::None) == 0);
+static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
+static_assert(int(FilterKind::PcfNxN) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
+static_assert(int(View::Side) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
+
+// The code the shaders read for an enumerator (shaders/codes.h): its value, never remapped.
+template <class E>
+constexpr int shaderCode(E value) {
+    return static_cast<int>(value);
+}
+
+inline constexpr int kMaxCascades = ST_MAX_CASCADES;
 
 struct CameraSettings {
     glm::vec3 position{0.0f, 1.7f, 10.0f};  // ws, metres
@@ -44,7 +117,7 @@ struct LightSettings {
 };
 
 struct CascadeSettings {
-    int count = 4;                         // 1..8
+    int count = 4;                         // 1..kMaxCascades
     SplitScheme scheme = SplitScheme::Practical;
     float lambda = 0.5f;                   // seed 000: 1 = fully logarithmic, 0 = uniform
     std::vector<float> manualSplits;       // view-depth ends of cascades 0..count-2, metres, increasing

@@ -22,6 +22,13 @@ protected:
         EXPECT_EQ(gpu::seriousDebugMessageCount(), messagesBefore_) << "GL debug output reported errors";
     }
 
+    // For a test that provokes exactly `count` serious messages on purpose (a broken shader):
+    // fails unless that many arrived since the last check, then expects none more.
+    void expectDebugMessages(int count) {
+        EXPECT_EQ(gpu::seriousDebugMessageCount() - messagesBefore_, count) << "serious GL debug messages";
+        messagesBefore_ = gpu::seriousDebugMessageCount();
+    }
+
 private:
     static inline std::unique_ptr<HeadlessContext> context_;
     int messagesBefore_ = 0;

@@ -1,0 +1,74 @@
+#include "renderer/render/shader_blocks.h"
+
+#include "renderer/csm/conventions.h"
+#include "renderer/render/side_view.h"
+#include "renderer/settings/field_table.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace st {
+namespace {
+void store(const FieldInfo& field, const gpu_if::MemberInfo& member, const Settings& s, void* block) {
+    auto* at = static_cast<char*>(block) + member.offset;
+    const FieldValue value = field.get(s);
+    if (member.type == gpu_if::MemberType::Float && field.kind == FieldKind::Float) {
+        std::memcpy(at, &std::get<float>(value), sizeof(float));
+        return;
+    }
+    if (member.type == gpu_if::MemberType::Int) {
+        int code = 0;
+        if (field.kind == FieldKind::Int || field.kind == FieldKind::Enum) code = std::get<int>(value);
+        else if (field.kind == FieldKind::Bool) code = std::get<bool>(value) ? 1 : 0;
+        else throw std::logic_error(std::string(field.path) + " cannot feed int member " + std::string(member.name));
+        std::memcpy(at, &code, sizeof(int));
+        return;
+    }
+    throw std::logic_error(std::string(field.path) + " (" + std::string(fieldKindName(field.kind)) +
+                           ") does not match the type of shader member " + std::string(member.name));
+}
+}  // namespace
+
+void copyShaderFields(const Settings& s, std::span<const gpu_if::MemberInfo> members, void* block) {
+    for (const FieldInfo& field : fieldTable()) {
+        if (field.shader.empty()) continue;
+        for (const gpu_if::MemberInfo& member : members)
+            if (member.name == field.shader) store(field, member, s, block);
+    }
+}
+
+gpu_if::FrameBlock frameBlock(const Settings& s, const csm::CascadePlan& plan) {
+    gpu_if::FrameBlock b;
+    copyShaderFields(s, b);
+    b.view = plan.vsView;
+    b.wsToSun = glm::vec4(-plan.wsLightDir, 0.0f);
+    return b;
+}
+
+gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& plan) {
+    gpu_if::CascadeBlock b;
+    copyShaderFields(s, b);
+    for (int i = 0; i < s.cascades.count; ++i) {
+        const csm::CascadeFit& f = plan.cascades[static_cast<std::size_t>(i)];
+        gpu_if::CascadeData& c = b.cascade[i];
+        c.shadowMatrix = csm::clipToTexture() * f.viewProj;
+        c.tint = glm::vec4(cascadeTint(i), 1.0f);
+        c.vsNear = plan.splits[static_cast<std::size_t>(i)];
+        c.vsFar = plan.splits[static_cast<std::size_t>(i) + 1];
+        c.texelWorld = f.texelWorldSize;
+        c.depthRange = f.lsBox.extent().z;
+    }
+    return b;
+}
+
+gpu_if::MaterialBlock materialBlock(const Material& m, bool textured) {
+    gpu_if::MaterialBlock b;
+    b.baseColor = m.baseColor;
+    b.hasTexture = textured ? 1 : 0;
+    b.alphaMask = m.alphaMask ? 1 : 0;
+    b.alphaCutoff = m.alphaCutoff;
+    return b;
+}
+
+}  // namespace st

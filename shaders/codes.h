@@ -1,0 +1,49 @@
+// Enum codes and limits, read by C++ (renderer/settings/settings.h defines each enum's values
+// from these) and by GLSL (through shaders/interface.h). Plain #defines only: no GLM, no types,
+// so the installed cascade math can carry it. A code is an enumerator's value and its index in
+// the enum's name table; each *_COUNT is checked against that table by a static_assert.
+#ifndef ST_SHADER_CODES_H
+#define ST_SHADER_CODES_H
+
+#define ST_MAX_CASCADES 8
+
+// SplitScheme
+#define ST_SPLIT_UNIFORM 0
+#define ST_SPLIT_LOGARITHMIC 1
+#define ST_SPLIT_PRACTICAL 2
+#define ST_SPLIT_MANUAL 3
+#define ST_SPLIT_COUNT 4
+
+// FitMode
+#define ST_FIT_CASCADE 0
+#define ST_FIT_SCENE 1
+#define ST_FIT_SPHERE 2
+#define ST_FIT_COUNT 3
+
+// ZExtension
+#define ST_ZEXT_NONE 0
+#define ST_ZEXT_DISTANCE 1
+#define ST_ZEXT_SCENE_BOUNDS 2
+#define ST_ZEXT_PANCAKE 3
+#define ST_ZEXT_COUNT 4
+
+// Selection
+#define ST_SELECT_INTERVAL 0
+#define ST_SELECT_MAP 1
+#define ST_SELECT_COUNT 2
+
+// FilterKind
+#define ST_FILTER_HARD 0
+#define ST_FILTER_PCF2X2 1
+#define ST_FILTER_PCF_NXN 2
+#define ST_FILTER_COUNT 3
+
+// View (Side draws the shaded scene from the orbit camera: main.frag shades it as SHADED)
+#define ST_VIEW_SHADED 0
+#define ST_VIEW_CASCADES 1
+#define ST_VIEW_SHADOW 2
+#define ST_VIEW_TEXEL_DENSITY 3
+#define ST_VIEW_SIDE 4
+#define ST_VIEW_COUNT 5
+
+#endif

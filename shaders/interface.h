@@ -1,0 +1,173 @@
+// The one interface between C++ and GLSL: uniform block layouts, binding points, vertex
+// attribute locations (and, through codes.h, every enum code). Both languages include this file.
+//
+// Each block is an X-macro list of members, M(type, name) for a member and A(type, name, count)
+// for an array. GLSL expands it into a std140 uniform block whose members are global names;
+// C++ into a struct of the same members (st::gpu_if::FrameBlock, ...), filled on the CPU and
+// uploaded as a UBO, plus a table of member names and offsets that a GL test compares with the
+// driver's std140 layout. A setting reaches a shader through the field table row's `.shader`,
+// which names a member here (renderer/render/shader_blocks.cpp copies it).
+//
+// std140 rules kept by hand, so the C++ struct needs no hidden padding: mat4/vec4 members start
+// on 16 bytes (put scalars in groups of four), no vec3 (use vec4), no scalar arrays (std140 pads
+// each element to 16 bytes: use a struct array), bools as int.
+#ifndef ST_SHADER_INTERFACE_H
+#define ST_SHADER_INTERFACE_H
+
+#include "codes.h"
+
+// Uniform block binding points.
+#define ST_BLOCK_FRAME 0
+#define ST_BLOCK_VIEW 1
+#define ST_BLOCK_CASCADES 2
+#define ST_BLOCK_MATERIAL 3
+#define ST_BLOCK_OVERLAY 4
+
+// Texture units.
+#define ST_BINDING_SHADOW_NEAREST 0  // depth array with hardware compare, nearest: hard shadows
+#define ST_BINDING_SHADOW_LINEAR 1   // same texture, linear compare: 2x2 PCF per tap
+#define ST_BINDING_BASE_COLOR 2
+#define ST_BINDING_DEPTH_VIEW 3      // a depth array read raw (no compare) by depth_view.frag
+
+// Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
+#define ST_ATTRIB_POSITION 0  // ws
+#define ST_ATTRIB_NORMAL 1    // ws, scene vertices
+#define ST_ATTRIB_UV 2        // scene vertices
+#define ST_ATTRIB_COLOR 1     // line vertices
+
+// Once per frame: the camera the cascades follow, the sun and the debug view.
+#define ST_FRAME_BLOCK(M, A)                                                                      \
+    M(mat4, view)      /* ws -> vs of the cascade camera: its view depth selects cascades */      \
+    M(vec4, wsToSun)   /* xyz: unit vector toward the sun */                                      \
+    M(float, intensity)                                                                           \
+    M(float, ambient)                                                                             \
+    M(int, viewMode)   /* ST_VIEW_* */                                                            \
+    M(int, framePad0)
+
+// Per pass (and per cascade in the shadow pass): what the draws are seen through.
+#define ST_VIEW_BLOCK(M, A) M(mat4, viewProj) /* ws -> clip of this pass */
+
+// One cascade's values, an element of CascadeBlock::cascade.
+#define ST_CASCADE_DATA(M, A)                                                                     \
+    M(mat4, shadowMatrix)  /* ws -> shadow texture space (ts) */                                  \
+    M(vec4, tint)          /* linear RGB of the cascades view and the side view's wireframe */    \
+    M(float, vsNear)       /* view depth where the slice starts, metres */                        \
+    M(float, vsFar)        /* view depth where it ends, metres */                                 \
+    M(float, texelWorld)   /* metres per texel */                                                 \
+    M(float, depthRange)   /* metres from the light box's near to its far plane */
+
+// Once per frame: how every pixel picks, biases and filters its cascade.
+#define ST_CASCADE_BLOCK(M, A)                                                                    \
+    M(int, cascadeCount)                                                                          \
+    M(int, selection)      /* ST_SELECT_* */                                                      \
+    M(float, blendBand)    /* fraction of a cascade's range cross-faded into the next */          \
+    M(int, filterKind)     /* ST_FILTER_* */                                                      \
+    M(int, filterSize)     /* taps per side of the NxN filter */                                  \
+    M(int, mapSize)        /* texels per side */                                                  \
+    M(float, biasConstant) /* metres */                                                           \
+    M(float, biasSlope)    /* texels per unit tan(angle to the sun) */                            \
+    M(float, normalOffset) /* texels */                                                           \
+    M(int, receiverPlane)  /* bool */                                                             \
+    M(int, cascadePad0)                                                                           \
+    M(int, cascadePad1)                                                                           \
+    A(CascadeData, cascade, ST_MAX_CASCADES)
+
+// Per draw: the material of the draw item.
+#define ST_MATERIAL_BLOCK(M, A)                                                                   \
+    M(vec4, baseColor)     /* linear RGBA factor */                                               \
+    M(int, hasTexture)     /* bool */                                                             \
+    M(int, alphaMask)      /* bool: alpha-tested (glTF alphaMode MASK) */                         \
+    M(float, alphaCutoff)                                                                         \
+    M(int, materialPad0)
+
+// Per draw of the debug passes: wireframes and shadow-map tiles.
+#define ST_OVERLAY_BLOCK(M, A)                                                                    \
+    M(float, brightness)   /* lines: multiplies the vertex colour */                              \
+    M(int, layer)          /* depth view: the array layer shown */                                \
+    M(float, depthLo)      /* depth view: stored depth shown brightest */                         \
+    M(float, depthHi)      /* depth view: stored depth shown darkest */
+
+#ifdef __cplusplus
+// ---------------------------------------------------------------------------------------------
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+#include <type_traits>
+
+namespace st::gpu_if {
+
+// std140 aligns mat4 and vec4 to 16 bytes; glm's types align to 4.
+typedef glm::mat4 mat4 __attribute__((aligned(16)));
+typedef glm::vec4 vec4 __attribute__((aligned(16)));
+
+#define ST_CPP_MEMBER(type, name) type name{};
+#define ST_CPP_ARRAY(type, name, count) type name[count]{};
+struct alignas(16) CascadeData { ST_CASCADE_DATA(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) FrameBlock { ST_FRAME_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) ViewBlock { ST_VIEW_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) CascadeBlock { ST_CASCADE_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) MaterialBlock { ST_MATERIAL_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) OverlayBlock { ST_OVERLAY_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+#undef ST_CPP_MEMBER
+#undef ST_CPP_ARRAY
+
+// What a scalar member holds, so a setting is copied into it with the right type.
+enum class MemberType { Float, Int, Other };
+
+struct MemberInfo {
+    std::string_view name;
+    std::size_t offset;  // bytes from the start of the block
+    std::size_t size;    // bytes
+    MemberType type;
+};
+
+template <class T>
+constexpr MemberType memberType() {
+    if constexpr (std::is_same_v<T, float>) return MemberType::Float;
+    else if constexpr (std::is_same_v<T, int>) return MemberType::Int;
+    else return MemberType::Other;
+}
+
+#define ST_INFO_M(type, name) MemberInfo{#name, offsetof(B, name), sizeof(B::name), memberType<type>()},
+#define ST_INFO_A(type, name, count) MemberInfo{#name, offsetof(B, name), sizeof(B::name), MemberType::Other},
+
+// Member tables in declaration order; the last element is a sentinel with an empty name.
+template <class B>
+struct BlockMembers;
+#define ST_BLOCK_MEMBERS(Block, LIST)                                                             \
+    template <>                                                                                   \
+    struct BlockMembers<Block> {                                                                  \
+        using B = Block;                                                                          \
+        static constexpr std::string_view blockName = #Block;                                     \
+        static constexpr MemberInfo members[] = {LIST(ST_INFO_M, ST_INFO_A) MemberInfo{}};        \
+    };
+ST_BLOCK_MEMBERS(FrameBlock, ST_FRAME_BLOCK)
+ST_BLOCK_MEMBERS(ViewBlock, ST_VIEW_BLOCK)
+ST_BLOCK_MEMBERS(CascadeData, ST_CASCADE_DATA)
+ST_BLOCK_MEMBERS(CascadeBlock, ST_CASCADE_BLOCK)
+ST_BLOCK_MEMBERS(MaterialBlock, ST_MATERIAL_BLOCK)
+ST_BLOCK_MEMBERS(OverlayBlock, ST_OVERLAY_BLOCK)
+#undef ST_BLOCK_MEMBERS
+#undef ST_INFO_M
+#undef ST_INFO_A
+
+}  // namespace st::gpu_if
+
+#else
+// ---------------------------------------------------------------------------------------------
+#define ST_GLSL_MEMBER(type, name) type name;
+#define ST_GLSL_ARRAY(type, name, count) type name[count];
+struct CascadeData { ST_CASCADE_DATA(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_FRAME) uniform FrameBlock { ST_FRAME_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_VIEW) uniform ViewBlock { ST_VIEW_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_CASCADES) uniform CascadeBlock { ST_CASCADE_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_MATERIAL) uniform MaterialBlock { ST_MATERIAL_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_OVERLAY) uniform OverlayBlock { ST_OVERLAY_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+#undef ST_GLSL_MEMBER
+#undef ST_GLSL_ARRAY
+#endif
+
+#endif
