@@ -1,5 +1,6 @@
 #include "renderer/settings/validation.h"
 
+#include "renderer/csm/split_range.h"
 #include "renderer/settings/enum_names.h"
 #include "renderer/settings/number_text.h"
 
@@ -134,7 +135,7 @@ void checkManualSplits(const Settings& s, std::vector<SettingsIssue>& out) {
         return;
     }
     const bool byDistance = c.shadowDistance > 0.0f;
-    const float end = byDistance ? c.shadowDistance : s.camera.farPlane;
+    const float end = csm::splitRangeEnd(s.camera, c);
     const std::string interval = std::string("(camera.nearPlane, ") +
                                  (byDistance ? "cascades.shadowDistance" : "camera.farPlane") + ") = (" +
                                  formatFloat(s.camera.nearPlane) + ", " + formatFloat(end) + ")";
