@@ -1,5 +1,6 @@
 #include "app/editor_session.h"
 
+#include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
 
@@ -207,10 +208,7 @@ void EditorSession::writeScreenshot(const fs::path& file, int width, int height)
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-    std::size_t row = std::size_t(width) * 4;
-    for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(img.pixels.begin() + y * row, img.pixels.begin() + (y + 1) * row,
-                         img.pixels.begin() + (height - 1 - y) * row);
+    flipRows(std::span(img.pixels), std::size_t(width) * 4);
     for (std::size_t i = 3; i < img.pixels.size(); i += 4) img.pixels[i] = 255;  // the window is opaque
     writeImageAtomic(file, img);
     std::printf("wrote %s (%dx%d)\n", file.string().c_str(), width, height);

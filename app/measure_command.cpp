@@ -5,8 +5,6 @@
 #include "metrics/measure_session.h"
 #include "metrics/metric_images.h"
 #include "metrics/metrics_json.h"
-#include "renderer/context/egl_context.h"
-#include "renderer/gpu/debug_output.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
 
@@ -49,7 +47,9 @@ void printSummary(const metrics::PresetMeasurement& m, const std::string& name, 
     std::fflush(stdout);
 }
 
-void measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metrics::MeasureSession& session) {
+// The GL work of one preset (render, read back, ground truth, cost, flicker); the returned
+// writer saves the metrics and images and prints the summary.
+PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metrics::MeasureSession& session) {
     Settings s = loadPreset(preset);
     if (opt.width) s.output.width = *opt.width;
     if (opt.height) s.output.height = *opt.height;
@@ -61,29 +61,20 @@ void measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metric
         std::printf("  %s: %s\n", name.c_str(), line.c_str());
         std::fflush(stdout);
     };
-    const int before = gpu::seriousDebugMessageCount();
-    const metrics::PresetMeasurement m = session.measure(s, preset.parent_path(), mo);
-    if (opt.debugContext && gpu::seriousDebugMessageCount() > before)
-        throw std::runtime_error(preset.string() + ": GL debug output reported errors (see above)");
-    const fs::path dir = opt.outDir / name;
-    writeOutputs(m, name, dir);
-    printSummary(m, name, dir);
+    auto m = std::make_shared<const metrics::PresetMeasurement>(session.measure(s, preset.parent_path(), mo));
+    return [m, name, dir = opt.outDir / name] {
+        writeOutputs(*m, name, dir);
+        printSummary(*m, name, dir);
+    };
 }
 
 }  // namespace
 
 int runMeasure(const MeasureCommandOptions& opt) {
-    std::unique_ptr<HeadlessContext> ctx;
-    try {
-        makeOutputDir(opt.outDir);
-        ctx = HeadlessContext::create(opt.debugContext);
-        if (opt.debugContext) gpu::enableDebugOutput();
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 2;
-    }
-    metrics::MeasureSession session;
-    return forEachPreset(opt.presets, [&](const fs::path& preset) { measureOne(opt, preset, session); });
+    return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt]() -> PresetWork {
+        auto session = std::make_shared<metrics::MeasureSession>();
+        return [&opt, session](const fs::path& preset) { return measureOne(opt, preset, *session); };
+    });
 }
 
 }  // namespace st::app

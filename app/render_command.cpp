@@ -2,11 +2,10 @@
 
 #include "app/preset_batch.h"
 
-#include "renderer/context/egl_context.h"
-#include "renderer/gpu/debug_output.h"
 #include "renderer/gpu/gl.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/renderer.h"
+#include "renderer/render/scene_cache.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/enum_names.h"
 #include "renderer/settings/settings_json.h"
@@ -14,28 +13,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <stdexcept>
 
 namespace st::app {
 namespace fs = std::filesystem;
 namespace {
-
-// Scenes and their GPU copies are shared by presets that name the same file.
-struct SceneCache {
-    std::map<std::string, std::unique_ptr<Scene>> scenes;
-    std::map<std::string, std::unique_ptr<Renderer>> renderers;
-
-    Renderer& rendererFor(const Settings& s, const fs::path& baseDir) {
-        const SceneOptions options{.ground = s.ground};
-        const std::string key = sceneKey(s.scene, baseDir, options);
-        auto it = renderers.find(key);
-        if (it != renderers.end()) return *it->second;
-        scenes[key] = std::make_unique<Scene>(loadScene(s.scene, baseDir, options));
-        return *(renderers[key] = std::make_unique<Renderer>(*scenes[key]));
-    }
-};
 
 void checkDeviceLimits(const Settings& s, const fs::path& preset) {
     GLint maxSize = 0, maxLayers = 0;
@@ -78,43 +61,36 @@ FrameStats benchmark(Renderer& r, const Settings& s, int frames, const fs::path&
     return stats;
 }
 
-void renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache& cache) {
+// The GL work of one preset; the returned writer saves the image and statistics.
+PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache<>& cache) {
     Settings s = loadPreset(preset);
     if (opt.view) s.output.view = *opt.view;
     if (opt.width) s.output.width = *opt.width;
     if (opt.height) s.output.height = *opt.height;
     checkDeviceLimits(s, preset);
-    int before = gpu::seriousDebugMessageCount();
     Renderer& r = cache.rendererFor(s, preset.parent_path());
     FrameStats stats = r.render(s);
     if (opt.frames > 1) stats = benchmark(r, s, opt.frames, preset);
     Rgba8Image img{r.width(), r.height(), r.readRgba8()};
-    if (opt.debugContext && gpu::seriousDebugMessageCount() > before)
-        throw std::runtime_error(preset.string() + ": GL debug output reported errors (see above)");
-    std::string stem = preset.stem().string();
-    fs::path png = opt.outDir / (stem + ".png");
-    writeImageAtomic(png, img);
-    writeTextAtomic(opt.outDir / (stem + ".json"), toJsonText(stats));
-    std::printf("wrote %s (%dx%d, view %s, %d x %d² maps, shadow %.1f ms, main %.1f ms)\n",
-                png.string().c_str(), r.width(), r.height(), enumName(s.output.view).c_str(),
-                s.cascades.count, s.cascades.mapSize, stats.gpuShadowMs, stats.gpuMainMs);
-    std::fflush(stdout);
+    return [outDir = opt.outDir, preset, s, stats, img = std::move(img)] {
+        const std::string stem = preset.stem().string();
+        const fs::path png = outDir / (stem + ".png");
+        writeImageAtomic(png, img);
+        writeTextAtomic(outDir / (stem + ".json"), toJsonText(stats));
+        std::printf("wrote %s (%dx%d, view %s, %d x %d² maps, shadow %.1f ms, main %.1f ms)\n",
+                    png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(),
+                    s.cascades.count, s.cascades.mapSize, stats.gpuShadowMs, stats.gpuMainMs);
+        std::fflush(stdout);
+    };
 }
 
 }  // namespace
 
 int runRender(const RenderOptions& opt) {
-    std::unique_ptr<HeadlessContext> ctx;
-    try {
-        makeOutputDir(opt.outDir);
-        ctx = HeadlessContext::create(opt.debugContext);
-        if (opt.debugContext) gpu::enableDebugOutput();
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 2;
-    }
-    SceneCache cache;
-    return forEachPreset(opt.presets, [&](const fs::path& preset) { renderOne(opt, preset, cache); });
+    return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt]() -> PresetWork {
+        auto cache = std::make_shared<SceneCache<>>();
+        return [&opt, cache](const fs::path& preset) { return renderOne(opt, preset, *cache); };
+    });
 }
 
 }  // namespace st::app

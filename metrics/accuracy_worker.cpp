@@ -5,7 +5,8 @@
 
 namespace st::metrics {
 
-AccuracyWorker::AccuracyWorker(unsigned rayThreads) : rayThreads_(rayThreads), thread_([this] { loop(); }) {}
+AccuracyWorker::AccuracyWorker(unsigned rayThreads, JobEndObserver onJobEnd)
+    : rayThreads_(rayThreads), onJobEnd_(std::move(onJobEnd)), thread_([this] { loop(); }) {}
 
 AccuracyWorker::~AccuracyWorker() {
     {
@@ -68,6 +69,7 @@ AccuracyOutcome AccuracyWorker::execute(Job& job) {
         out.error = e.what();
     }
     out.seconds = std::chrono::duration<double>(Clock::now() - job.submitted).count();
+    if (onJobEnd_) onJobEnd_(*job.control, out.result.has_value());
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -34,8 +35,13 @@ struct AccuracyProgress {
 
 class AccuracyWorker {
 public:
+    // Called on the worker thread when a job's computation ends, before its outcome is kept or
+    // dropped: the job's control (cancel flag, rows done) and whether it produced figures. Lets a
+    // test see that a job was stopped rather than waited for; the editor passes none.
+    using JobEndObserver = std::function<void(const JobControl& control, bool completed)>;
+
     // rayThreads: threads the rows of a job run on (0: one per core).
-    explicit AccuracyWorker(unsigned rayThreads = 0);
+    explicit AccuracyWorker(unsigned rayThreads = 0, JobEndObserver onJobEnd = {});
     ~AccuracyWorker();
     AccuracyWorker(const AccuracyWorker&) = delete;
     AccuracyWorker& operator=(const AccuracyWorker&) = delete;
@@ -58,6 +64,7 @@ private:
     void cancelCurrentLocked();
 
     const unsigned rayThreads_;
+    const JobEndObserver onJobEnd_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<Job> pending_;

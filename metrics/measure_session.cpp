@@ -32,13 +32,7 @@ glm::mat4 observerViewProj(const Settings& s) {
 }
 
 MeasureSession::SceneEntry& MeasureSession::entryFor(const Settings& s, const fs::path& presetDir) {
-    const SceneOptions options{.ground = s.ground};
-    SceneEntry& e = scenes_[sceneKey(s.scene, presetDir, options)];
-    if (!e.scene) {
-        e.scene = std::make_unique<Scene>(loadScene(s.scene, presetDir, options));
-        e.renderer = std::make_unique<Renderer>(*e.scene);
-    }
-    return e;
+    return scenes_.entryFor(s, presetDir);
 }
 
 MeasurePass& MeasureSession::pass() {

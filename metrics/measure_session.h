@@ -10,6 +10,7 @@
 #include "metrics/texel_density.h"
 #include "renderer/render/measure_pass.h"
 #include "renderer/render/renderer.h"
+#include "renderer/render/scene_cache.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 
@@ -18,7 +19,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,17 +63,17 @@ public:
     // SceneError, std::invalid_argument (settings the cascade math rejects) or std::runtime_error.
     PresetMeasurement measure(const Settings& s, const std::filesystem::path& presetDir, const MeasureOptions& opt = {});
 
-    // The scene, renderer and BVH for a scene spec, created on first use.
-    struct SceneEntry {
-        std::unique_ptr<Scene> scene;
-        std::unique_ptr<Renderer> renderer;
+    // The scene, renderer and BVH for a scene spec; scene and renderer are created on first use,
+    // the BVH (truth) by measure() when it first needs it.
+    struct TruthSlot {
         std::unique_ptr<GroundTruth> truth;
     };
+    using SceneEntry = SceneCache<TruthSlot>::Entry;
     SceneEntry& entryFor(const Settings& s, const std::filesystem::path& presetDir);
     MeasurePass& pass();
 
 private:
-    std::map<std::string, SceneEntry> scenes_;
+    SceneCache<TruthSlot> scenes_;
     std::unique_ptr<MeasurePass> pass_;
 };
 

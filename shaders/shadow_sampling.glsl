@@ -1,6 +1,6 @@
 // Cascade selection, biasing and filtering of the shadow-map test, from CascadeBlock
 // (shaders/interface.h). The CPU twin of the selection rules is renderer/csm/selection.cpp;
-// tests/metrics compare the two on every pixel.
+// tests/metrics/selection_match_gl_test.cpp checks both pick the same cascade on every pixel.
 #include "interface.h"
 layout(binding = ST_BINDING_SHADOW_NEAREST) uniform sampler2DArrayShadow uShadowNearest;
 layout(binding = ST_BINDING_SHADOW_LINEAR) uniform sampler2DArrayShadow uShadowLinear;
@@ -28,7 +28,8 @@ mat2 texelJacobian(int i, vec3 wsDx, vec3 wsDy) {
 // of the texel area one pixel spans, 1 / |det J|.
 float screenPixelsPerTexel(mat2 j) { return 1.0 / max(abs(determinant(j)), 1e-12); }
 
-// Interval-based selection (seed 000, seed 004): the slice the view depth falls in.
+// Interval-based selection (seed 000, seed 004): the slice the view depth falls in. A depth
+// equal to split i+1 is cascade i; there is no lower bound (below the near split is cascade 0).
 int selectInterval(float vsDepth) {
     for (int i = 0; i < cascadeCount; ++i)
         if (vsDepth <= cascade[i].vsFar) return i;

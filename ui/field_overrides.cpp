@@ -1,5 +1,6 @@
 #include "ui/field_overrides.h"
 
+#include "renderer/csm/limits.h"
 #include "renderer/scene/scene.h"
 #include "ui/field_rules.h"
 #include "ui/field_widgets.h"
@@ -66,13 +67,13 @@ bool drawScene(const FieldInfo& field, UiFrame& f) {
 bool drawMapSize(const FieldInfo& field, UiFrame& f) {
     const int count = f.s.cascades.count;
     const bool changed = editPowerOfTwo(field, f.s, [count](int size) {
-        return "(" + formatBytes(shadowMapBytes(count, size)) + ")";
+        return "(" + formatBytes(csm::shadowMapBytes(count, size)) + ")";
     });
     recordItem(f.state.rects, std::string(field.path));
     drawHelpMarker(field);
     const int size = f.s.cascades.mapSize;
-    ImGui::TextDisabled("  %d x %d x %d x 4 B = %s of shadow maps", count, size, size,
-                        formatBytes(shadowMapBytes(count, size)).c_str());
+    ImGui::TextDisabled("  %d x %d x %d x %zu B = %s of shadow maps", count, size, size, csm::kShadowTexelBytes,
+                        formatBytes(csm::shadowMapBytes(count, size)).c_str());
     return changed;
 }
 

@@ -1,5 +1,7 @@
 #include "ui/field_rules.h"
 
+#include "renderer/csm/split_range.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -64,11 +66,6 @@ std::vector<int> powerOfTwoChoices(const FieldInfo& field) {
     return sizes;
 }
 
-std::size_t shadowMapBytes(int count, int size) {
-    const auto side = static_cast<std::size_t>(std::max(size, 0));
-    return static_cast<std::size_t>(std::max(count, 0)) * side * side * 4;
-}
-
 std::string formatBytes(std::size_t bytes) {
     const double value = static_cast<double>(bytes);
     if (bytes >= (std::size_t{1} << 30)) return printed("%.2f GiB", value / double(1 << 30));
@@ -93,7 +90,7 @@ std::vector<float> fitManualSplits(const Settings& s, std::span<const float> cur
     if (splits.empty() && currentSplits.size() == needed + 2) {
         return {currentSplits.begin() + 1, currentSplits.end() - 1};
     }
-    const float end = c.shadowDistance > 0.0f ? c.shadowDistance : s.camera.farPlane;
+    const float end = csm::splitRangeEnd(s.camera, c);
     const float last = splits.empty() ? s.camera.nearPlane : splits.back();
     const std::size_t missing = needed - splits.size();
     for (std::size_t j = 0; j < missing; ++j) {

@@ -29,8 +29,6 @@ std::string intFormat(const FieldInfo& field);  // "%d px"
 
 std::vector<int> powerOfTwoChoices(const FieldInfo& field);  // 256, 512, ... 8192 for mapSize
 
-// Bytes of `count` depth layers of size x size 32-bit texels (GL_DEPTH_COMPONENT32F).
-std::size_t shadowMapBytes(int count, int size);
 std::string formatBytes(std::size_t bytes);  // "16.0 MiB", "512 KiB", "12 B"
 std::string formatLength(double metres);      // "3.2 mm", "4.50 cm", "12.3 m", "1.20 km"
 

@@ -1,5 +1,7 @@
 #include "renderer/csm/frustum.h"
 
+#include "renderer/csm/error_text.h"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -7,19 +9,11 @@
 #include <glm/vec4.hpp>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace st::csm {
 namespace {
-
-template <typename T>
-std::string str(T v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-}
 
 void checkRange(float vsNear, float vsFar, const char* nearName, const char* farName) {
     if (!std::isfinite(vsNear) || vsNear < 0.0f)

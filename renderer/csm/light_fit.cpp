@@ -1,5 +1,6 @@
 #include "renderer/csm/light_fit.h"
 
+#include "renderer/csm/error_text.h"
 #include "renderer/csm/frustum.h"
 
 #include <glm/common.hpp>
@@ -10,21 +11,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace st::csm {
 namespace {
-
-template <typename T>
-std::string str(T v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-}
-
-[[noreturn]] void fail(const std::string& message) { throw std::invalid_argument(message); }
 
 void validateSplits(std::span<const float> splits, int index) {
     if (splits.size() < 2) fail("splits must hold at least 2 values, got " + str(splits.size()));

@@ -1,6 +1,9 @@
 #pragma once
-// Cascade selection on the CPU: the same rules the main-pass shader applies, for tests/metrics.
+// Cascade selection on the CPU: exactly the rules of shaders/shadow_sampling.glsl (selectInterval,
+// selectMap, edgeMargin), for tests and metrics. tests/metrics/selection_match_gl_test.cpp checks
+// that both pick the same cascade for every pixel.
 #include "renderer/csm/light_fit.h"
+#include "renderer/settings/settings.h"
 
 #include <glm/vec3.hpp>
 
@@ -9,13 +12,21 @@
 
 namespace st::csm {
 
-// Interval-based (seed 000/004): the first i with vsDepth < splits[i+1]; -1 if vsDepth is
-// outside [splits[0], splits[N]] (beyond the shadow distance: lit).
+// Interval-based (seed 000/004): the first i with vsDepth <= splits[i+1]. So a depth equal to
+// split i+1 belongs to cascade i (the nearer one); a depth below the near split splits[0] gives
+// cascade 0 (no lower bound: nothing nearer than the near plane is drawn); a depth above the last
+// split, or NaN, gives -1 (beyond the shadow distance: lit). Throws if splits has < 2 values.
 int selectCascadeInterval(std::span<const float> splits, float vsDepth);
 
+// The texture-space border map-based selection leaves out so the filter's taps stay inside the
+// tile: (taps radius + 1 texel) / mapSize for NxN PCF, 1 texel otherwise (shader edgeMargin()).
+float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize);
+
 // Map-based (seed 003/004): the first cascade whose shadow texture coordinates x,y lie inside
-// [margin, 1-margin] and z inside [0,1]; -1 if none.
-int selectCascadeMap(std::span<const CascadeFit> cascades, glm::vec3 wsPosition,
-                     float margin = 0.0f);
+// [margin, 1-margin] and z inside [0,1]; -1 if none. Like the shader, each cascade looks at the
+// point moved along wsNormal by normalOffsetTexels of its own texel world size (bias.normalOffset),
+// so the offset cannot be applied once by the caller.
+int selectCascadeMap(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, float margin = 0.0f,
+                     glm::vec3 wsNormal = glm::vec3(0.0f), float normalOffsetTexels = 0.0f);
 
 }  // namespace st::csm

@@ -1,21 +1,15 @@
 #include "renderer/csm/splits.h"
 
+#include "renderer/csm/error_text.h"
+#include "renderer/csm/limits.h"
+#include "renderer/csm/split_range.h"
+
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace st::csm {
 namespace {
-
-[[noreturn]] void fail(const std::string& message) { throw std::invalid_argument(message); }
-
-template <typename T>
-std::string str(T v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-}
 
 void checkCamera(const SplitParams& p) {
     if (!std::isfinite(p.nearPlane) || p.nearPlane <= 0.0f)
@@ -49,7 +43,8 @@ void checkManual(const SplitParams& p, float end) {
 }
 
 void validate(const SplitParams& p, float end) {
-    if (p.count < 1 || p.count > 8) fail("cascades.count must be in 1..8, got " + str(p.count));
+    if (p.count < 1 || p.count > kMaxCascades)
+        fail("cascades.count must be in 1.." + str(kMaxCascades) + ", got " + str(p.count));
     checkCamera(p);
     checkShadowDistance(p);
     // Lambda and the manual list only matter for their own scheme: don't reject unused values.
@@ -62,8 +57,10 @@ float lambdaOf(const SplitParams& p) {
     switch (p.scheme) {
         case SplitScheme::Uniform: return 0.0f;
         case SplitScheme::Logarithmic: return 1.0f;
-        default: return p.lambda;
+        case SplitScheme::Practical: return p.lambda;
+        case SplitScheme::Manual: break;  // the manual list, not lambda, places the splits
     }
+    throw std::logic_error("lambdaOf: scheme " + str(static_cast<int>(p.scheme)) + " has no lambda");
 }
 
 // Seed 000, practical split scheme: z_i = lambda n (e/n)^(i/N) + (1-lambda)(n + (i/N)(e-n)).
@@ -78,7 +75,7 @@ float practicalSplit(double n, double e, double lambda, int i, int count) {
 }  // namespace
 
 std::vector<float> computeSplits(const SplitParams& p) {
-    const float end = p.shadowDistance > 0.0f ? p.shadowDistance : p.farPlane;
+    const float end = splitRangeEnd(p.farPlane, p.shadowDistance);
     validate(p, end);
     std::vector<float> z(static_cast<std::size_t>(p.count) + 1);
     z.front() = p.nearPlane;  // exact end points, not rounded through pow()

@@ -9,7 +9,7 @@ namespace st::csm {
 
 struct SplitParams {
     SplitScheme scheme = SplitScheme::Practical;
-    int count = 4;                 // number of cascades N, 1..8
+    int count = 4;                 // number of cascades N, 1..kMaxCascades (csm/limits.h)
     float nearPlane = 0.1f;        // camera near n, > 0
     float farPlane = 400.0f;       // camera far f, > n
     float lambda = 0.5f;           // practical blend, [0,1]; 1 = logarithmic, 0 = uniform
@@ -20,7 +20,7 @@ struct SplitParams {
 // Returns N+1 view depths z_0 = n < z_1 < ... < z_N = end, where end = shadowDistance or f.
 // Practical (seed 000, eq. for z_i): z_i = lambda n (e/n)^(i/N) + (1-lambda)(n + (i/N)(e-n)),
 // with e the end distance. Uniform is lambda = 0, Logarithmic lambda = 1.
-// Throws std::invalid_argument naming the bad parameter (count out of 1..8, n <= 0, n >= f,
+// Throws std::invalid_argument naming the bad parameter (count out of 1..kMaxCascades, n <= 0, n >= f,
 // lambda outside [0,1], manual list of the wrong length or not increasing, shadowDistance
 // outside (n, f]).
 std::vector<float> computeSplits(const SplitParams& p);

@@ -1,6 +1,7 @@
 #include "renderer/render/measure_pass.h"
 
 #include "renderer/gpu/pass_state.h"
+#include "renderer/image/flip_rows.h"
 #include "renderer/render/shader_library.h"
 #include "shaders/interface.h"
 
@@ -56,11 +57,7 @@ std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture) const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(glm::vec4)),
                       pixels.data());
-    // GL's first row is the bottom one; samples are stored top row first, like images.
-    const auto row = static_cast<std::ptrdiff_t>(width_);
-    for (int y = 0; y < height_ / 2; ++y)
-        std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
-                         pixels.begin() + (height_ - 1 - y) * row);
+    flipRows(std::span(pixels), std::size_t(width_));  // GL's first row is the bottom one
     return pixels;
 }
 

@@ -1,6 +1,6 @@
 #include "renderer/render/offscreen_target.h"
 
-#include <algorithm>
+#include "renderer/image/flip_rows.h"
 
 namespace st {
 
@@ -26,10 +26,7 @@ std::vector<std::uint8_t> OffscreenTarget::readRgba8() const {
     std::vector<std::uint8_t> pixels(std::size_t(width_) * height_ * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(pixels.size()), pixels.data());
-    // GL's first row is the bottom one; images are stored top row first.
-    std::size_t row = std::size_t(width_) * 4;
-    for (int y = 0; y < height_ / 2; ++y)
-        std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row, pixels.begin() + (height_ - 1 - y) * row);
+    flipRows(std::span(pixels), std::size_t(width_) * 4);
     return pixels;
 }
 

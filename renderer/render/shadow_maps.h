@@ -1,6 +1,7 @@
 #pragma once
 // The cascades' depth texture array (D32F, one layer per cascade) with its framebuffer and the two
 // compare samplers. Reallocated only when the layer count or size changes.
+#include "renderer/csm/limits.h"
 #include "renderer/gpu/gl.h"
 
 #include <cstddef>
@@ -16,7 +17,7 @@ public:
     GLuint texture() const { return depth_.id(); }
     int layers() const { return layers_; }
     int size() const { return size_; }
-    std::size_t bytes() const { return std::size_t(layers_) * size_ * size_ * 4; }
+    std::size_t bytes() const { return csm::shadowMapBytes(layers_, size_); }
 
 private:
     gpu::Texture depth_;

@@ -73,3 +73,28 @@ std::string_view changeClassName(ChangeClass change);  // "none", "uniform", ...
 std::string_view fieldKindName(FieldKind kind);        // "float", "int", ...
 
 }  // namespace st
+
+// ---- The members of one path.keyframes element ------------------------------------------------
+namespace st {
+
+// One member of a CameraKeyframe: a sub-table the JSON reader, writer, schema and validation
+// iterate, so a member's key is spelled once. `field` describes it like a row of the table (path =
+// the key inside a keyframe, label, help, unit, kind, range); kind, unit and range are copied from
+// the camera field of the same name, so a keyframe holds exactly what `camera` can.
+struct KeyframeFieldInfo {
+    FieldInfo field;       // its get/set are null: use the keyframe accessors below
+    bool required = true;  // false: a missing member keeps CameraKeyframe{}'s value
+    FieldValue (*get)(const CameraKeyframe&) = nullptr;
+    void (*set)(CameraKeyframe&, const FieldValue& value) = nullptr;
+};
+
+// position, target, fovY: the order of the members in JSON.
+const std::vector<KeyframeFieldInfo>& keyframeFieldTable();
+
+// The member with this key, or nullptr.
+const KeyframeFieldInfo* findKeyframeField(std::string_view key);
+
+// "position, target, fovY" for messages.
+std::string keyframeKeyList();
+
+}  // namespace st

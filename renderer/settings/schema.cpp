@@ -1,6 +1,7 @@
 #include "renderer/settings/schema.h"
 
 #include "renderer/settings/field_table.h"
+#include "renderer/settings/number_text.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
 
@@ -34,19 +35,32 @@ OJson intSchema(const FieldInfo& field) {
 
 OJson typeSchema(const FieldInfo& field);
 
-// An object per keyframe; its members take the schemas of the camera fields of the same name.
-OJson keyframeListSchema() {
-    const std::pair<const char*, const char*> members[] = {
-        {"position", "Cascade camera position at this keyframe. Unit: m."},
-        {"target", "Point the cascade camera looks at. Unit: m."},
-        {"fovY", "Vertical field of view at this keyframe (default 60). Unit: deg."}};
-    OJson item = objectSchema();
-    for (const auto& [key, description] : members) {
-        OJson member{{"description", description}};
-        member.update(typeSchema(*findField(std::string("camera.") + key)));
-        item["properties"][key] = std::move(member);
+// A keyframe member's description: its help, the default of an optional member, its unit.
+std::string keyframeMemberDescription(const KeyframeFieldInfo& m) {
+    std::string text(m.field.help);  // one sentence, ending in '.'
+    if (!m.required && !text.empty()) {
+        const FieldValue value = m.get(CameraKeyframe{});
+        const std::string shown = std::holds_alternative<float>(value) ? formatFloat(std::get<float>(value))
+                                                                       : fieldValueToJson(m.field, value).dump();
+        text.insert(text.size() - 1, " (default " + shown + ")");
     }
-    item["required"] = OJson::array({"position", "target"});
+    if (!m.field.unit.empty()) text += " Unit: " + std::string(m.field.unit) + ".";
+    return text;
+}
+
+// An object per keyframe (keyframeFieldTable()); its members take the schemas of the camera
+// fields of the same name.
+OJson keyframeListSchema() {
+    OJson item = objectSchema();
+    auto required = OJson::array();
+    for (const KeyframeFieldInfo& m : keyframeFieldTable()) {
+        const std::string key(m.field.path);
+        OJson member{{"description", keyframeMemberDescription(m)}};
+        member.update(typeSchema(m.field));
+        item["properties"][key] = std::move(member);
+        if (m.required) required.push_back(key);
+    }
+    item["required"] = std::move(required);
     return OJson{{"type", "array"}, {"items", std::move(item)}};
 }
 

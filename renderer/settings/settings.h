@@ -97,8 +97,6 @@ constexpr int shaderCode(E value) {
     return static_cast<int>(value);
 }
 
-inline constexpr int kMaxCascades = ST_MAX_CASCADES;
-
 struct CameraSettings {
     glm::vec3 position{0.0f, 1.7f, 10.0f};  // ws, metres
     glm::vec3 target{0.0f, 1.0f, 0.0f};     // ws, metres
@@ -117,7 +115,7 @@ struct LightSettings {
 };
 
 struct CascadeSettings {
-    int count = 4;                         // 1..kMaxCascades
+    int count = 4;                         // 1..csm::kMaxCascades (renderer/csm/limits.h)
     SplitScheme scheme = SplitScheme::Practical;
     float lambda = 0.5f;                   // seed 000: 1 = fully logarithmic, 0 = uniform
     std::vector<float> manualSplits;       // view-depth ends of cascades 0..count-2, metres, increasing

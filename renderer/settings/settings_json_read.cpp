@@ -173,35 +173,43 @@ std::optional<glm::vec3> readVec3(const FieldInfo& field, const Json& value, con
     return glm::vec3((*floats)[0], (*floats)[1], (*floats)[2]);
 }
 
-// A required point member of a keyframe, checked like camera.<key>.
-std::optional<glm::vec3> readPoint(const Json& keyframe, const std::string& key, const std::string& path,
-                                   Issues& issues) {
-    const auto it = keyframe.find(key);
-    if (it == keyframe.end()) {
-        issues.push_back({path + "." + key, "missing; every keyframe needs a position and a target"});
-        return std::nullopt;
-    }
-    return readVec3(*findField("camera." + key), *it, path + "." + key, issues);
+std::optional<FieldValue> readValueAt(const FieldInfo& field, const Json& value, const std::string& path,
+                                      Issues& issues);
+
+// "a position and a target": the members a keyframe cannot do without.
+std::string requiredKeyframeMembers() {
+    std::vector<std::string> names;
+    for (const KeyframeFieldInfo& m : keyframeFieldTable())
+        if (m.required) names.push_back("a " + std::string(m.field.path));
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return text;
 }
 
-// One {"position": [x,y,z], "target": [x,y,z], "fovY": deg} object; position and target are
-// required (a pose without them is a typo, not a default), fovY defaults to CameraKeyframe{}'s.
-// Each member is checked against the camera field of the same name.
+// One {"position": [x,y,z], "target": [x,y,z], "fovY": deg} object (keyframeFieldTable()): the
+// required members must be there (a pose without them is a typo, not a default), the others
+// default to CameraKeyframe{}'s. Each member is checked like the camera field of the same name.
 std::optional<CameraKeyframe> readKeyframe(const Json& value, const std::string& path, Issues& issues) {
     if (!value.is_object()) {
-        issues.push_back({path, "expected an object {position, target, fovY}, got " + describe(value)});
+        issues.push_back({path, "expected an object {" + keyframeKeyList() + "}, got " + describe(value)});
         return std::nullopt;
     }
     const std::size_t before = issues.size();
     for (const auto& [key, member] : value.items()) {
-        if (key != "position" && key != "target" && key != "fovY")
-            issues.push_back({path + "." + key, "unknown key, expected one of: position, target, fovY"});
+        if (!findKeyframeField(key))
+            issues.push_back({path + "." + key, "unknown key, expected one of: " + keyframeKeyList()});
     }
     CameraKeyframe frame;
-    frame.position = readPoint(value, "position", path, issues).value_or(frame.position);
-    frame.target = readPoint(value, "target", path, issues).value_or(frame.target);
-    if (const auto it = value.find("fovY"); it != value.end())
-        frame.fovY = readFloat(*findField("camera.fovY"), *it, path + ".fovY", issues).value_or(frame.fovY);
+    for (const KeyframeFieldInfo& m : keyframeFieldTable()) {
+        const std::string key(m.field.path);
+        const auto it = value.find(key);
+        if (it == value.end()) {
+            if (m.required) issues.push_back({path + "." + key, "missing; every keyframe needs " + requiredKeyframeMembers()});
+            continue;
+        }
+        if (auto read = readValueAt(m.field, *it, path + "." + key, issues)) m.set(frame, *read);
+    }
     if (issues.size() != before) return std::nullopt;
     return frame;
 }
@@ -229,31 +237,36 @@ std::optional<FieldValue> wrap(std::optional<T> value) {
     return FieldValue(std::in_place_type<T>, std::move(*value));
 }
 
-std::optional<FieldValue> readBool(const FieldInfo& field, const Json& value, Issues& issues) {
+std::optional<FieldValue> readBool(const Json& value, const std::string& path, Issues& issues) {
     if (value.is_boolean()) return FieldValue(std::in_place_type<bool>, value.get<bool>());
-    issues.push_back({std::string(field.path), "expected true or false, got " + describe(value)});
+    issues.push_back({path, "expected true or false, got " + describe(value)});
     return std::nullopt;
 }
 
-std::optional<FieldValue> readString(const FieldInfo& field, const Json& value, Issues& issues) {
+std::optional<FieldValue> readString(const Json& value, const std::string& path, Issues& issues) {
     if (value.is_string()) return FieldValue(std::in_place_type<std::string>, value.get<std::string>());
-    issues.push_back({std::string(field.path), "expected a string, got " + describe(value)});
+    issues.push_back({path, "expected a string, got " + describe(value)});
     return std::nullopt;
 }
 
-std::optional<FieldValue> readValue(const FieldInfo& field, const Json& value, Issues& issues) {
-    const std::string path(field.path);
+// `path` names the value in messages: the field's path, or a keyframe member's.
+std::optional<FieldValue> readValueAt(const FieldInfo& field, const Json& value, const std::string& path,
+                                      Issues& issues) {
     switch (field.kind) {
         case FieldKind::Float: return wrap(readFloat(field, value, path, issues));
         case FieldKind::Int: return wrap(readInt(field, value, path, issues));
         case FieldKind::Enum: return wrap(readEnum(field, value, path, issues));
-        case FieldKind::Bool: return readBool(field, value, issues);
-        case FieldKind::String: return readString(field, value, issues);
+        case FieldKind::Bool: return readBool(value, path, issues);
+        case FieldKind::String: return readString(value, path, issues);
         case FieldKind::FloatList: return wrap(readFloats(field, value, path, issues));
         case FieldKind::Vec3: return wrap(readVec3(field, value, path, issues));
         case FieldKind::KeyframeList: return wrap(readKeyframes(field, value, issues));
     }
     return std::nullopt;
+}
+
+std::optional<FieldValue> readValue(const FieldInfo& field, const Json& value, Issues& issues) {
+    return readValueAt(field, value, std::string(field.path), issues);
 }
 
 std::vector<std::string> withSource(const Issues& issues, const std::string& sourceName) {

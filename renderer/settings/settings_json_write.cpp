@@ -23,9 +23,10 @@ nlohmann::ordered_json floatArray(const float* values, std::size_t count) {
 nlohmann::ordered_json keyframesToJson(const std::vector<CameraKeyframe>& frames) {
     auto array = nlohmann::ordered_json::array();
     for (const CameraKeyframe& f : frames) {
-        array.push_back({{"position", floatArray(&f.position.x, 3)},
-                         {"target", floatArray(&f.target.x, 3)},
-                         {"fovY", tidyFloat(f.fovY)}});
+        nlohmann::ordered_json object = nlohmann::ordered_json::object();
+        for (const KeyframeFieldInfo& m : keyframeFieldTable())
+            object[std::string(m.field.path)] = fieldValueToJson(m.field, m.get(f));
+        array.push_back(std::move(object));
     }
     return array;
 }

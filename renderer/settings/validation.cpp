@@ -1,5 +1,6 @@
 #include "renderer/settings/validation.h"
 
+#include "renderer/csm/split_range.h"
 #include "renderer/settings/enum_names.h"
 #include "renderer/settings/number_text.h"
 
@@ -42,34 +43,28 @@ std::optional<std::string> checkIntRules(const FieldInfo& field, double value) {
     return std::nullopt;
 }
 
-void checkElements(const FieldInfo& field, const float* values, std::size_t count,
+void checkElements(const FieldInfo& field, const float* values, std::size_t count, const std::string& path,
                    std::vector<SettingsIssue>& out) {
     for (std::size_t i = 0; i < count; ++i) {
-        if (auto reason = checkNumber(field, values[i])) {
-            out.push_back({std::string(field.path) + "[" + std::to_string(i) + "]", *reason});
-        }
+        if (auto reason = checkNumber(field, values[i])) out.push_back({path + "[" + std::to_string(i) + "]", *reason});
     }
 }
 
-// Each keyframe member follows the rule of the camera field of the same name.
+void checkFieldAt(const FieldInfo& field, const FieldValue& value, const std::string& path,
+                  std::vector<SettingsIssue>& out);
+
+// Each keyframe member (keyframeFieldTable()) follows the rule of the camera field of the same name.
 void checkKeyframes(const std::vector<CameraKeyframe>& frames, std::vector<SettingsIssue>& out) {
-    const FieldInfo& position = *findField("camera.position");
-    const FieldInfo& target = *findField("camera.target");
-    const FieldInfo& fovY = *findField("camera.fovY");
     for (std::size_t i = 0; i < frames.size(); ++i) {
-        const std::string prefix = "path.keyframes[" + std::to_string(i) + "]";
-        for (int axis = 0; axis < 3; ++axis) {
-            const std::string index = "[" + std::to_string(axis) + "]";
-            if (auto reason = checkNumber(position, frames[i].position[axis]))
-                out.push_back({prefix + ".position" + index, *reason});
-            if (auto reason = checkNumber(target, frames[i].target[axis]))
-                out.push_back({prefix + ".target" + index, *reason});
-        }
-        if (auto reason = checkNumber(fovY, frames[i].fovY)) out.push_back({prefix + ".fovY", *reason});
+        const std::string prefix = "path.keyframes[" + std::to_string(i) + "].";
+        for (const KeyframeFieldInfo& m : keyframeFieldTable())
+            checkFieldAt(m.field, m.get(frames[i]), prefix + std::string(m.field.path), out);
     }
 }
 
-void checkField(const FieldInfo& field, const FieldValue& value, std::vector<SettingsIssue>& out) {
+// `path` names the value in messages: the field's path, or a keyframe member's.
+void checkFieldAt(const FieldInfo& field, const FieldValue& value, const std::string& path,
+                  std::vector<SettingsIssue>& out) {
     std::optional<std::string> reason;
     switch (field.kind) {
         case FieldKind::Float: reason = checkNumber(field, std::get<float>(value)); break;
@@ -85,15 +80,19 @@ void checkField(const FieldInfo& field, const FieldValue& value, std::vector<Set
         case FieldKind::String:
             if (field.nonEmpty && std::get<std::string>(value).empty()) reason = "must not be empty";
             break;
-        case FieldKind::Vec3: checkElements(field, &std::get<glm::vec3>(value).x, 3, out); break;
+        case FieldKind::Vec3: checkElements(field, &std::get<glm::vec3>(value).x, 3, path, out); break;
         case FieldKind::FloatList: {
             const auto& list = std::get<std::vector<float>>(value);
-            checkElements(field, list.data(), list.size(), out);
+            checkElements(field, list.data(), list.size(), path, out);
             break;
         }
         case FieldKind::KeyframeList: checkKeyframes(std::get<std::vector<CameraKeyframe>>(value), out); break;
     }
-    if (reason) out.push_back({std::string(field.path), *reason});
+    if (reason) out.push_back({path, *reason});
+}
+
+void checkField(const FieldInfo& field, const FieldValue& value, std::vector<SettingsIssue>& out) {
+    checkFieldAt(field, value, std::string(field.path), out);
 }
 
 // ---- Cross-field rules ------------------------------------------------------------------------
@@ -134,7 +133,7 @@ void checkManualSplits(const Settings& s, std::vector<SettingsIssue>& out) {
         return;
     }
     const bool byDistance = c.shadowDistance > 0.0f;
-    const float end = byDistance ? c.shadowDistance : s.camera.farPlane;
+    const float end = csm::splitRangeEnd(s.camera, c);
     const std::string interval = std::string("(camera.nearPlane, ") +
                                  (byDistance ? "cascades.shadowDistance" : "camera.farPlane") + ") = (" +
                                  formatFloat(s.camera.nearPlane) + ", " + formatFloat(end) + ")";

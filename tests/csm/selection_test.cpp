@@ -14,18 +14,30 @@
 namespace st::csm {
 namespace {
 
+// The shader's selectInterval: vsDepth <= splits[i+1] picks i, no lower bound.
 TEST(SelectionTest, IntervalAtBoundariesAndOutside) {
     const std::vector<float> z = {1.0f, 10.0f, 50.0f, 200.0f};
-    EXPECT_EQ(selectCascadeInterval(z, 0.5f), -1);  // in front of the first cascade
+    EXPECT_EQ(selectCascadeInterval(z, 0.5f), 0);  // nearer than the near split: still cascade 0
+    EXPECT_EQ(selectCascadeInterval(z, -3.0f), 0);
     EXPECT_EQ(selectCascadeInterval(z, 1.0f), 0);
     EXPECT_EQ(selectCascadeInterval(z, 9.999f), 0);
-    EXPECT_EQ(selectCascadeInterval(z, 10.0f), 1);  // a boundary belongs to the next cascade
+    EXPECT_EQ(selectCascadeInterval(z, 10.0f), 0);  // a split belongs to the cascade it ends
+    EXPECT_EQ(selectCascadeInterval(z, std::nextafter(10.0f, 11.0f)), 1);
     EXPECT_EQ(selectCascadeInterval(z, 49.9f), 1);
-    EXPECT_EQ(selectCascadeInterval(z, 50.0f), 2);
+    EXPECT_EQ(selectCascadeInterval(z, 50.0f), 1);
+    EXPECT_EQ(selectCascadeInterval(z, std::nextafter(50.0f, 51.0f)), 2);
     EXPECT_EQ(selectCascadeInterval(z, 200.0f), 2);  // the last end is still shadowed
-    EXPECT_EQ(selectCascadeInterval(z, 200.01f), -1);
+    EXPECT_EQ(selectCascadeInterval(z, std::nextafter(200.0f, 201.0f)), -1);
     EXPECT_EQ(selectCascadeInterval(z, std::numeric_limits<float>::quiet_NaN()), -1);
+    EXPECT_EQ(selectCascadeInterval(std::vector<float>{1.0f, 5.0f}, 5.0f), 0);  // one cascade
     EXPECT_THROW(selectCascadeInterval(std::vector<float>{1.0f}, 1.0f), std::invalid_argument);
+}
+
+TEST(SelectionTest, EdgeMarginIsTheFilterRadiusPlusOneTexel) {
+    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::Hard, 5, 1024), 1.0f / 1024.0f);
+    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::Pcf2x2, 5, 512), 1.0f / 512.0f);
+    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::PcfNxN, 5, 1024), 3.0f / 1024.0f);  // 2 taps + 1
+    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::PcfNxN, 3, 256), 2.0f / 256.0f);
 }
 
 struct Fitted {
@@ -86,6 +98,20 @@ TEST(SelectionTest, MapMarginExcludesTheBorder) {
                                                glm::vec3(1e-3f, 0, 0)),
               0);
     EXPECT_EQ(selectCascadeMap(only0, ws, 0.01f), -1);
+}
+
+TEST(SelectionTest, MapNormalOffsetIsScaledByEachCascadesTexel) {
+    const Fitted f = fitted(FitMode::Sphere);
+    const CascadeFit& c0 = f.fits[0];
+    const glm::mat3 wsFromLs = glm::transpose(glm::mat3(c0.lsView));
+    // Just inside cascade 0's min-x face; the "normal" points out of the box along -x (ls).
+    const glm::vec3 ws = wsFromLs * glm::vec3(c0.lsBox.min.x + 0.5f * c0.texelWorldSize, c0.lsBox.center().y,
+                                              c0.lsBox.center().z);
+    const glm::vec3 outward = wsFromLs * glm::vec3(-1.0f, 0.0f, 0.0f);
+    const std::vector<CascadeFit> only0 = {c0};
+    EXPECT_EQ(selectCascadeMap(only0, ws, 0.0f, outward, 0.25f), 0);  // moved a quarter texel: inside
+    EXPECT_EQ(selectCascadeMap(only0, ws, 0.0f, outward, 1.0f), -1);  // a whole texel: outside
+    EXPECT_EQ(selectCascadeMap(only0, ws, 0.0f, -outward, 1.0f), 0);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
 #include <thread>
 
 namespace st::metrics {
@@ -210,13 +211,35 @@ TEST(AccuracyWorkerTest, CancelledJobIsNeverHandedOver) {
     EXPECT_TRUE(out->result);
 }
 
-// The editor closing mid-job: the destructor must cancel and join, not hang or crash.
-TEST(AccuracyWorkerTest, DestructorJoinsARunningJob) {
-    const auto scene = boxScene();
-    AccuracyWorker worker(1);
-    worker.submit(boxFrame(scene, 400, 1000));
-    for (AccuracyProgress p = worker.progress(); p.busy && p.fraction == 0.0f; p = worker.progress())
-        std::this_thread::yield();
+// The editor closing mid-job: the destructor must cancel the running job and join, not wait for
+// it to finish (nor hang or crash).
+TEST(AccuracyWorkerTest, DestructorCancelsAndJoinsARunningJob) {
+    StillFrame frame = boxFrame(boxScene(), 400, 1000);  // 0.4 M rays on one thread: seconds
+    const int rows = 2 * frame.samples.height;            // traced, then scored
+    struct Ending {
+        int count = 0;
+        bool cancelled = false;
+        bool completed = false;
+        int rowsDone = 0;
+    };
+    std::mutex mutex;
+    Ending ending;
+    {
+        AccuracyWorker worker(1, [&](const JobControl& control, bool completed) {
+            std::lock_guard lock(mutex);
+            ending = {ending.count + 1, control.cancelled(), completed, control.rowsDone.load()};
+        });
+        worker.submit(std::move(frame));
+        AccuracyProgress p = worker.progress();
+        for (; p.busy && p.fraction == 0.0f; p = worker.progress()) std::this_thread::yield();
+        ASSERT_TRUE(p.busy) << "the job ended before it was seen running";
+    }  // ~AccuracyWorker: cancel, join
+    std::lock_guard lock(mutex);
+    EXPECT_EQ(ending.count, 1);  // the job ended before the destructor returned
+    EXPECT_TRUE(ending.cancelled);
+    EXPECT_FALSE(ending.completed);
+    EXPECT_GT(ending.rowsDone, 0);     // it was running ...
+    EXPECT_LT(ending.rowsDone, rows);  // ... and stopped early
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // Replays one preset at a small size and compares it with its reviewed golden image.
-//   golden_check PRESET GOLDEN_DIR ARTIFACT_DIR [--skip-without-assets]
+//   golden_check PRESET GOLDEN_DIR ARTIFACT_DIR [--tolerances FILE] [--skip-without-assets]
+// --tolerances: the per-preset tolerance table (tests/render/golden_tolerances.json); without it
+// every preset takes test::Tolerance's default. The tolerance in use and its reason are printed.
 // --skip-without-assets: exit 77 (CTest "skipped") when the preset's scene file is absent, for
 // presets of the third-party scenes in ../shared/assets, which a user's clone may not have.
 // ST_UPDATE_GOLDENS=1 writes the golden instead (review the new images before committing).
@@ -10,12 +12,15 @@
 #include "renderer/render/renderer.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings_json.h"
+#include "tests/support/golden_tolerance.h"
 #include "tests/support/image_compare.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <optional>
+#include <string>
 
 namespace fs = std::filesystem;
 using namespace st;
@@ -35,7 +40,34 @@ Rgba8Image renderPreset(const fs::path& preset) {
     return {r.width(), r.height(), r.readRgba8()};
 }
 
-int check(const fs::path& preset, const fs::path& goldenDir, const fs::path& artifactDir) {
+struct Args {
+    fs::path preset, goldenDir, artifactDir;
+    std::optional<fs::path> tolerances;
+    bool skipWithoutAssets = false;
+};
+
+std::optional<Args> parseArgs(int argc, char** argv) {
+    if (argc < 4) return std::nullopt;
+    Args a{argv[1], argv[2], argv[3], std::nullopt, false};
+    for (int i = 4; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--skip-without-assets") a.skipWithoutAssets = true;
+        else if (arg == "--tolerances" && i + 1 < argc) a.tolerances = argv[++i];
+        else return std::nullopt;
+    }
+    return a;
+}
+
+test::GoldenTolerance toleranceOf(const Args& a) {
+    if (!a.tolerances) return {test::Tolerance{}, "no --tolerances table given", false};
+    return test::toleranceFor(test::readToleranceTable(*a.tolerances), a.preset.stem().string());
+}
+
+int check(const Args& a) {
+    const fs::path& preset = a.preset;
+    const fs::path& goldenDir = a.goldenDir;
+    const fs::path& artifactDir = a.artifactDir;
+    const test::GoldenTolerance golden = toleranceOf(a);  // a bad table fails before rendering
     auto ctx = HeadlessContext::create(true);
     gpu::enableDebugOutput();
     Rgba8Image actual = renderPreset(preset);
@@ -43,26 +75,27 @@ int check(const fs::path& preset, const fs::path& goldenDir, const fs::path& art
         std::fprintf(stderr, "FAIL %s: GL debug output reported errors\n", preset.string().c_str());
         return 1;
     }
-    fs::path golden = goldenDir / (preset.stem().string() + ".png");
+    const fs::path goldenFile = goldenDir / (preset.stem().string() + ".png");
     const char* update = std::getenv("ST_UPDATE_GOLDENS");
     if (update && std::string(update) == "1") {
-        writeImageAtomic(golden, actual);
-        std::printf("updated %s\n", golden.string().c_str());
+        writeImageAtomic(goldenFile, actual);
+        std::printf("updated %s\n", goldenFile.string().c_str());
         return 0;
     }
-    if (!fs::exists(golden)) {
+    if (!fs::exists(goldenFile)) {
         std::fprintf(stderr, "FAIL: no golden %s (run ./test.sh --update-goldens, then review it)\n",
-                     golden.string().c_str());
+                     goldenFile.string().c_str());
         return 1;
     }
-    test::Tolerance tol;  // 5/255 per channel, 0.1 % of pixels (Filament's renderdiff)
-    test::CompareResult r = test::compareImages(actual, readImage(golden), tol);
+    const test::Tolerance& tol = golden.tolerance;
+    std::printf("%s: tolerance %s\n", preset.stem().string().c_str(), golden.describe().c_str());
+    test::CompareResult r = test::compareImages(actual, readImage(goldenFile), tol);
     std::printf("%s: %s\n", preset.stem().string().c_str(), r.summary().c_str());
     if (r.pass) return 0;
     fs::create_directories(artifactDir);
     std::string stem = preset.stem().string();
     writeImageAtomic(artifactDir / (stem + ".actual.png"), actual);
-    if (r.sizeMatches) writeImageAtomic(artifactDir / (stem + ".diff.png"), test::diffImage(actual, readImage(golden), tol));
+    if (r.sizeMatches) writeImageAtomic(artifactDir / (stem + ".diff.png"), test::diffImage(actual, readImage(goldenFile), tol));
     std::fprintf(stderr, "FAIL %s: see %s\n", stem.c_str(), artifactDir.string().c_str());
     return 1;
 }
@@ -74,17 +107,18 @@ bool sceneMissing(const fs::path& preset) {
 }
 
 int main(int argc, char** argv) {
-    bool skipWithoutAssets = argc == 5 && std::string(argv[4]) == "--skip-without-assets";
-    if (argc != 4 && !skipWithoutAssets) {
-        std::fprintf(stderr, "usage: golden_check PRESET GOLDEN_DIR ARTIFACT_DIR [--skip-without-assets]\n");
+    const std::optional<Args> args = parseArgs(argc, argv);
+    if (!args) {
+        std::fprintf(stderr, "usage: golden_check PRESET GOLDEN_DIR ARTIFACT_DIR [--tolerances FILE] "
+                             "[--skip-without-assets]\n");
         return 2;
     }
     try {
-        if (skipWithoutAssets && sceneMissing(argv[1])) {
+        if (args->skipWithoutAssets && sceneMissing(args->preset)) {
             std::printf("SKIP %s: its scene is not there (../shared/assets beside the project?)\n", argv[1]);
             return 77;
         }
-        return check(argv[1], argv[2], argv[3]);
+        return check(*args);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "FAIL %s: %s\n", argv[1], e.what());
         return 1;

@@ -2,13 +2,16 @@
 #include "renderer/csm/culling.h"
 #include "renderer/gpu/gl.h"
 #include "renderer/scene/scene.h"
+#include "renderer/settings/enum_names.h"
 #include "renderer/settings/settings_json.h"
 #include "tests/render/render_test_util.h"
 #include "tests/support/gl_fixture.h"
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
+#include <vector>
 
 using namespace st;
 
@@ -111,25 +114,49 @@ TEST_F(RenderGLTest, ChangingCountAndMapSizeLeaksNoGLObjects) {
     EXPECT_EQ(gpu::liveObjectCount(), live);
 }
 
+namespace {
+// Share of pixels whose colour differs between two images of the same size.
+double differingShare(const Rgba8Image& a, const Rgba8Image& b) {
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i + 3 < a.pixels.size(); i += 4)
+        differ += !std::equal(&a.pixels[i], &a.pixels[i] + 3, &b.pixels[i]);
+    return double(differ) / double(a.pixels.size() / 4);
+}
+}  // namespace
+
+// Every value of View (taken from its names, so a view added to the enum is covered without
+// touching this test) with every filter and fit. Each view must draw something of its own: its
+// image differs from every other view's in a good share of the pixels.
 TEST_F(RenderGLTest, EveryViewFilterAndFitRendersWithoutGLErrors) {
+    const auto viewNames = enumNames<View>();
+    // The views this test was written against; a new one must show up in the checks below (it
+    // does, through viewNames) and in this count, once someone has looked at what it draws.
+    EXPECT_EQ(viewNames.size(), 5u) << "View gained or lost a value: review this test's coverage";
     Scene scene = makeBuiltinScene("yard");
     Renderer r(scene);
     Settings s;
     s.output = {96, 64, View::Shaded};
     s.cascades.mapSize = 256;
-    for (View v : {View::Shaded, View::Cascades, View::Shadow})
-        for (FilterKind f : {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN})
-            for (FitMode fit : {FitMode::Cascade, FitMode::Scene, FitMode::Sphere}) {
-                s.output.view = v;
-                s.filter.kind = f;
-                s.cascades.fit = fit;
-                s.cascades.selection = fit == FitMode::Scene ? Selection::Map : Selection::Interval;
-                s.cascades.zExtension = fit == FitMode::Sphere ? ZExtension::Pancake : ZExtension::SceneBounds;
-                s.bias.receiverPlane = f == FilterKind::PcfNxN;
-                s.cascades.blendBand = 0.2f;
-                FrameStats stats = r.render(s);
-                EXPECT_EQ(stats.cascades.size(), 4u);
+    for (FilterKind f : {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN})
+        for (FitMode fit : {FitMode::Cascade, FitMode::Scene, FitMode::Sphere}) {
+            s.filter.kind = f;
+            s.cascades.fit = fit;
+            s.cascades.selection = fit == FitMode::Scene ? Selection::Map : Selection::Interval;
+            s.cascades.zExtension = fit == FitMode::Sphere ? ZExtension::Pancake : ZExtension::SceneBounds;
+            s.bias.receiverPlane = f == FilterKind::PcfNxN;
+            s.cascades.blendBand = 0.2f;
+            std::vector<Rgba8Image> images;
+            for (std::size_t v = 0; v < viewNames.size(); ++v) {
+                s.output.view = static_cast<View>(v);
+                EXPECT_EQ(r.render(s).cascades.size(), 4u) << viewNames[v];
+                images.push_back({r.width(), r.height(), r.readRgba8()});
             }
+            for (std::size_t a = 0; a < images.size(); ++a)
+                for (std::size_t b = a + 1; b < images.size(); ++b)
+                    EXPECT_GT(differingShare(images[a], images[b]), 0.05)
+                        << "views " << viewNames[a] << " and " << viewNames[b] << " look alike (filter "
+                        << enumName(f) << ", fit " << enumName(fit) << ")";
+        }
 }
 
 TEST_F(RenderGLTest, CullingSkipsCastersOutsideEachLightBox) {

@@ -1,4 +1,5 @@
 // The pure rules behind the settings widgets: clamping, legal ints, formats, derived figures.
+#include "renderer/csm/limits.h"
 #include "renderer/settings/field_table.h"
 #include "ui/field_rules.h"
 
@@ -67,9 +68,9 @@ TEST(FieldRulesTest, FormatsCarryTheStepPrecisionAndUnit) {
 }
 
 TEST(FieldRulesTest, MapMemoryIsCountTimesSizeSquaredTimesFourBytes) {
-    EXPECT_EQ(shadowMapBytes(4, 1024), 4u * 1024u * 1024u * 4u);
-    EXPECT_EQ(formatBytes(shadowMapBytes(4, 1024)), "16.0 MiB");
-    EXPECT_EQ(formatBytes(shadowMapBytes(8, 8192)), "2.00 GiB");
+    EXPECT_EQ(csm::shadowMapBytes(4, 1024), 4u * 1024u * 1024u * 4u);
+    EXPECT_EQ(formatBytes(csm::shadowMapBytes(4, 1024)), "16.0 MiB");
+    EXPECT_EQ(formatBytes(csm::shadowMapBytes(8, 8192)), "2.00 GiB");
     EXPECT_EQ(formatBytes(512 * 1024), "512 KiB");
     EXPECT_EQ(formatBytes(12), "12 B");
 }

@@ -1,5 +1,7 @@
 #include "tests/ui/ui_gl_driver.h"
 
+#include "renderer/image/flip_rows.h"
+
 #include <backends/imgui_impl_opengl3.h>
 
 #include <cstdint>
@@ -37,15 +39,10 @@ void GlUiDriver::renderDrawData(ImDrawData* data) {
 
 Rgba8Image GlUiDriver::screenshot() const {
     Rgba8Image image{width_, height_, std::vector<std::uint8_t>(static_cast<std::size_t>(width_ * height_ * 4))};
-    std::vector<std::uint8_t> bottomUp(image.pixels.size());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(colour_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottomUp.size()),
-                      bottomUp.data());
-    const auto row = static_cast<std::size_t>(width_ * 4);
-    for (int y = 0; y < height_; ++y) {
-        const auto from = bottomUp.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height_ - 1 - y));
-        std::copy(from, from + static_cast<std::ptrdiff_t>(row), image.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
-    }
+    glGetTextureImage(colour_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()),
+                      image.pixels.data());
+    flipRows(std::span(image.pixels), static_cast<std::size_t>(width_) * 4);
     return image;
 }
 
