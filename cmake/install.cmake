@@ -18,9 +18,8 @@ install(FILES ${CMAKE_SOURCE_DIR}/renderer/settings/settings.h DESTINATION ${ST_
 # settings.h includes shaders/codes.h (plain #defines, valid C++ and GLSL) once that exists.
 install(FILES ${CMAKE_SOURCE_DIR}/shaders/codes.h DESTINATION ${ST_HEADER_DIR}/shaders OPTIONAL)
 
-install(TARGETS st_csm st_settings_types EXPORT shadowtuneTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  INCLUDES DESTINATION ${ST_HEADER_DIR})
+# Their include directory, <prefix>/include/shadowtune, comes from the targets' INSTALL_INTERFACE.
+install(TARGETS st_csm st_settings_types EXPORT shadowtuneTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(EXPORT shadowtuneTargets NAMESPACE shadowtune:: DESTINATION ${ST_CMAKE_DIR})
 configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/shadowtuneConfig.cmake.in
   ${CMAKE_BINARY_DIR}/shadowtuneConfig.cmake INSTALL_DESTINATION ${ST_CMAKE_DIR})

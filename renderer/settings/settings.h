@@ -21,7 +21,7 @@ enum class ZExtension { None, Distance, SceneBounds, Pancake };
 enum class Selection { Interval, Map };  // seed 004: view depth vs first map that contains the point
 enum class FilterKind { Hard, Pcf2x2, PcfNxN };
 // TexelDensity: screen pixels per shadow texel as a heat map (blue < 1/4 wasted, green 1 ideal,
-// red > 1 perspective aliasing; DESIGN.md "Aliasing / texel density").
+// red > 1 perspective aliasing; docs/architecture.md#texel-density).
 // Side: the frame from an outside orbit camera with the main frustum, its split planes and each
 // cascade's light box as wireframes.
 enum class View { Shaded, Cascades, Shadow, TexelDensity, Side };
@@ -88,7 +88,7 @@ struct CameraKeyframe {
     bool operator==(const CameraKeyframe&) const = default;
 };
 
-// A camera path for the flicker measurement (DESIGN.md "Stability (flicker)"): the *cascade
+// A camera path for the flicker measurement (docs/architecture.md#flicker): the *cascade
 // camera* moves through the keyframes (linearly, evenly over `frames` frames) and drives the
 // cascades, while the preset's `camera` stays put as the observer that sees the shadows.
 struct PathSettings {

@@ -105,5 +105,11 @@ check "consumer without arguments uses the SplitParams defaults" close "$("$cons
 "$consumer" 0.1 400 0 0.5 >/dev/null 2>"$work/stderr"
 check "consumer reports a bad count" err_has "count"
 
+readme=$(cat "$src/README.md")
+for f in CMakeLists.txt main.cpp; do
+  check "README.md shows examples/csm_consumer/$f verbatim" test -n "$(grep -F '' "$src/examples/csm_consumer/$f")" -a \
+    "${readme/"$(cat "$src/examples/csm_consumer/$f")"/}" != "$readme"
+done
+
 echo "$failures failure(s)"
 ((failures == 0))
