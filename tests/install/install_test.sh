@@ -66,9 +66,17 @@ version=$(cat "$work/stdout")
 check "--version exits 0" test "$(cat "$work/rc")" = 0
 check "--version says 'shadowtune <version> (commit <hash>|unknown)': $version" \
   grep -qE '^shadowtune [0-9]+\.[0-9]+(\.[0-9]+)? \(commit ([0-9a-f]{12}(-dirty)?|unknown)\)$' "$work/stdout"
+built=$(sed -n 's/^#define ST_GIT_COMMIT "\(.*\)"$/\1/p' "$build/app/generated/st_version.h")
+check "--version names the commit the build recorded ($built)" grep -qF "(commit $built)" "$work/stdout"
+# The script behind it: HEAD in this checkout, "unknown" outside any.
+version_of() {  # version_of DIR: the commit cmake/version_header.cmake finds for DIR
+  "$cmake" -DSOURCE_DIR="$1" -DOUT="$work/v.h" -DVERSION=0 -DGIT="$(command -v git)" \
+    -P "$src/cmake/version_header.cmake" && sed -n 's/^#define ST_GIT_COMMIT "\(.*\)"$/\1/p' "$work/v.h"
+}
 if head=$(git -C "$src" rev-parse --short=12 HEAD 2>/dev/null) && [[ $(git -C "$src" rev-parse --show-toplevel) -ef $src ]]; then
-  check "--version names HEAD $head (rebuild if it moved)" grep -qE "\(commit $head(-dirty)?\)" "$work/stdout"
+  check "version_header.cmake gives HEAD $head" grep -qE "^$head(-dirty)?$" <<<"$(version_of "$src")"
 fi
+check "version_header.cmake gives unknown outside a checkout" test "$(version_of "$work/cwd")" = unknown
 
 run render "$P/share/shadowtune/presets/default.json" --out "$work/o" --size 160x90
 check "render of the installed default.json exits 0" test "$(cat "$work/rc")" = 0
