@@ -5,8 +5,8 @@
 namespace st::app {
 
 struct EditorOptions {
-    std::optional<std::filesystem::path> preset;  // default: presets/default.json if present
-    std::filesystem::path presetDir = "presets";
+    std::optional<std::filesystem::path> preset;  // default: <presetDir>/default.json if present
+    std::filesystem::path presetDir = "presets";  // the editor command passes defaultPresetDir()
     int frames = 0;                                // > 0: quit after N frames (smoke tests)
     std::optional<std::filesystem::path> screenshot;  // written after the last frame
     std::optional<std::filesystem::path> sceneShot;   // the scene view alone, after the last frame

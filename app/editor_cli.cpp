@@ -1,6 +1,7 @@
 // `shadowtune editor`: the interactive tuning window.
 #include "app/commands.h"
 #include "app/editor_app.h"
+#include "app/preset_dir.h"
 
 #include <memory>
 
@@ -10,7 +11,7 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     auto opt = std::make_shared<EditorOptions>();
     auto preset = std::make_shared<std::string>();
     CLI::App* editor = cli.add_subcommand("editor", "Open the interactive editor (needs a display)");
-    editor->add_option("preset", *preset, "Preset to open (default: presets/default.json)");
+    editor->add_option("preset", *preset, "Preset to open (default: default.json of presets/, or of the installed presets)");
     editor->add_option("--frames", opt->frames, "Quit after N frames (for scripted runs)")->check(CLI::Range(1, 1000000));
     editor->add_option("--screenshot", opt->screenshot, "Write the window to this PNG after the last frame");
     editor->add_option("--scene-screenshot", opt->sceneShot, "Write the scene view alone (no panels) after the last frame");
@@ -20,6 +21,7 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");
     editor->callback([opt, preset, &exitCode] {
         if (!preset->empty()) opt->preset = *preset;
+        opt->presetDir = defaultPresetDir();
         exitCode = runEditor(*opt);
     });
 }

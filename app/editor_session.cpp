@@ -35,7 +35,7 @@ void EditorSession::scanPresets() {
     std::error_code ec;
     for (const fs::path& dir : {opt_.presetDir, opt_.presetDir / "scenes"})
         for (const auto& e : fs::directory_iterator(dir, ec))
-            if (e.path().extension() == ".json" && e.path().filename() != "schema.json") presetFiles_.push_back(e.path());
+            if (e.path().extension() == ".json") presetFiles_.push_back(e.path());
     std::sort(presetFiles_.begin(), presetFiles_.end());
 }
 

@@ -1,9 +1,11 @@
 // shadowtune: entry point. Each command lives in its own file and registers itself here.
 #include "app/commands.h"
+#include "app/version.h"
 
 int main(int argc, char** argv) {
     CLI::App cli{"shadowtune: tune cascaded shadow maps"};
     cli.require_subcommand(1);
+    cli.set_version_flag("--version", st::app::versionText(), "Print the version and git commit, then exit");
     int exitCode = 0;
     st::app::addRenderCommand(cli, exitCode);
     st::app::addEditorCommand(cli, exitCode);

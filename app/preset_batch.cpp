@@ -24,10 +24,6 @@ void makeOutputDir(const fs::path& dir) {
 int forEachPreset(const std::vector<fs::path>& presets, const std::function<void(const fs::path&)>& one) {
     int failed = 0;
     for (const fs::path& preset : presets) {
-        if (isJsonSchemaFile(preset)) {
-            std::fprintf(stderr, "note: %s is the presets' JSON Schema, not a preset: skipped\n", preset.string().c_str());
-            continue;
-        }
         try {
             one(preset);
         } catch (const std::exception& e) {

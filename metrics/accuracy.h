@@ -1,6 +1,6 @@
 #pragma once
-// Accuracy of the shadow-map test against the ground truth (DESIGN.md "Misclassification",
-// "Filtered error"). The denominator is the receivers: pixels with a surface that faces the sun
+// Accuracy of the shadow-map test against the ground truth (docs/architecture.md#misclassification,
+// #filtered-error). The denominator is the receivers: pixels with a surface that faces the sun
 // (MeasureSamples::receiver). Pixels facing away are shadowed in truth and in the image
 // whatever the map says (the main pass multiplies by max(N.L, 0)); terminator pixels (smooth
 // normal toward the sun, triangle away from it) have no answer the map could get right. Both

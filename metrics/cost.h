@@ -1,5 +1,5 @@
 #pragma once
-// Cost (DESIGN.md "Cost"): GPU time per pass (timer queries, median over frames after a
+// Cost (docs/architecture.md#cost): GPU time per pass (timer queries, median over frames after a
 // warm-up), CPU time, shadow-map memory, caster triangles and draw calls submitted per cascade,
 // and texels: every layer's mapSize^2 is cleared and rasterised into, of which casters cover
 // `texelsCovered`.

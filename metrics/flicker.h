@@ -1,5 +1,5 @@
 #pragma once
-// Stability (DESIGN.md "Stability (flicker)"): along a camera path with a static scene and
+// Stability (docs/architecture.md#flicker): along a camera path with a static scene and
 // light, the share of fixed world-space sample points whose shadow result changes between
 // consecutive frames. The observer camera stands still, so each of its pixels is one fixed world
 // point; only the cascade camera moves. The ground truth never changes there, so every change

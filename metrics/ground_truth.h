@@ -1,5 +1,5 @@
 #pragma once
-// Ground truth (DESIGN.md "How the product is measured"): for each visible pixel, an exact ray
+// Ground truth (docs/architecture.md#ground-truth): for each visible pixel, an exact ray
 // cast from the surface point toward the sun against the scene's triangles says lit (1) or
 // shadowed (0). No shadow map is involved. The BVH (Embree 3) holds exactly the Scene's
 // world-space triangles, the ones the GL passes draw; alpha-masked materials let rays through

@@ -1,8 +1,9 @@
 #pragma once
-// Measures one preset end to end (DESIGN.md "How the product is measured"): renders it, reads
-// back the measurement pass, casts the ground truth, scores accuracy and texel density, times
-// the passes, and replays the camera path for flicker. Needs a current GL 4.5 context. Scenes,
-// their renderers and BVHs are kept per scene, so presets of one scene share them.
+// Measures one preset end to end (docs/architecture.md#how-the-product-is-measured):
+// renders it, reads back the measurement pass, casts the ground truth, scores accuracy and
+// texel density, times the passes, and replays the camera path for flicker. Needs a current
+// GL 4.5 context. Scenes, their renderers and BVHs are kept per scene, so presets of one scene
+// share them.
 #include "metrics/accuracy.h"
 #include "metrics/cost.h"
 #include "metrics/flicker.h"

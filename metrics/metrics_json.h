@@ -1,6 +1,6 @@
 #pragma once
 // metrics.json: every figure of a PresetMeasurement, machine-readable. Shares are fractions of
-// the receivers (pixels facing the sun), as DESIGN.md defines them; counts are pixels.
+// the receivers (pixels facing the sun), as docs/architecture.md defines them; counts are pixels.
 #include "metrics/measure_session.h"
 
 #include <nlohmann/json.hpp>

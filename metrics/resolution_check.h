@@ -1,13 +1,14 @@
 #pragma once
-// Which errors the map's resolution explains (the edge band of DESIGN.md's misclassification
-// split), decided exactly rather than by a screen-space distance. The unfiltered test at a
-// point answers for the shadow-map texel the point falls in: the caster depth stored there was
-// rasterised at the texel's centre. So if the truth at the receiver point under a nearby texel
-// centre agrees with the map, the error is the map's finite resolution at a true shadow edge
-// (expected aliasing, "edge"); if the truth under every nearby centre disagrees, the map got
-// the texel itself wrong (acne, a leak, a missing caster, a seam: "gross"). Screen-space bands
-// miss the sub-pixel casters that matter most (poles, wires, leaves): their true shadow can fall
-// between pixel centres while a texel centre still catches it.
+// Which errors the map's resolution explains (the edge band of the misclassification split,
+// docs/architecture.md#misclassification), decided exactly rather than by a screen-space
+// distance. The unfiltered test at a point answers for the shadow-map texel the point falls
+// in: the caster depth stored there was rasterised at the texel's centre. So if the truth at
+// the receiver point under a nearby texel centre agrees with the map, the error is the map's
+// finite resolution at a true shadow edge (expected aliasing, "edge"); if the truth under every
+// nearby centre disagrees, the map got the texel itself wrong (acne, a leak, a missing caster,
+// a seam: "gross"). Screen-space bands miss the sub-pixel casters that matter most (poles,
+// wires, leaves): their true shadow can fall between pixel centres while a texel centre still
+// catches it.
 #include "metrics/ground_truth.h"
 #include "renderer/csm/cascade_plan.h"
 

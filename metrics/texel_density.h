@@ -1,5 +1,5 @@
 #pragma once
-// Texel density (DESIGN.md "Aliasing / texel density"): screen pixels covered by one shadow
+// Texel density (docs/architecture.md#texel-density): screen pixels covered by one shadow
 // texel at each pixel, 1 / |det d(texel)/d(screen)| (shadow_sampling.glsl, the same formula the
 // texel-density view colours). 1 is ideal; above 1 one texel is smeared over several pixels
 // (perspective aliasing); below 1/4 the map spends four or more texels per pixel (wasted).

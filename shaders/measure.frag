@@ -1,5 +1,5 @@
 #version 450 core
-// Per-pixel inputs of the metrics (DESIGN.md "How the product is measured"), as floats. Drawn
+// Per-pixel inputs of the metrics (docs/architecture.md#how-the-product-is-measured), as floats. Drawn
 // with main.vert and the main pass's coverage rules (alpha test, culling), so every figure
 // belongs to a pixel the shaded image shows. Targets:
 //   0: ws position, w = 1 (the clear value 0 marks pixels with no surface)

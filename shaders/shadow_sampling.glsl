@@ -24,7 +24,7 @@ mat2 texelJacobian(int i, vec3 wsDx, vec3 wsDy) {
     return mat2((m * wsDx).xy, (m * wsDy).xy);
 }
 
-// Screen pixels covered by one shadow texel (DESIGN.md "Aliasing / texel density"): the inverse
+// Screen pixels covered by one shadow texel (docs/architecture.md#texel-density): the inverse
 // of the texel area one pixel spans, 1 / |det J|.
 float screenPixelsPerTexel(mat2 j) { return 1.0 / max(abs(determinant(j)), 1e-12); }
 
@@ -76,8 +76,8 @@ float biasedDepth(int i, float tsZ, float tanTheta) {
 }
 
 // The unfiltered test: one nearest-texel compare with the bias, whatever the filter setting.
-// The accuracy metrics score this against the ray-cast ground truth (DESIGN.md
-// "Misclassification").
+// The accuracy metrics score this against the ray-cast ground truth
+// (docs/architecture.md#misclassification).
 float hardShadow(int i, vec3 ts, float tanTheta) {
     return texture(uShadowNearest, vec4(ts.xy, float(i), biasedDepth(i, ts.z, tanTheta)));
 }

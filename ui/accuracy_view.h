@@ -1,7 +1,7 @@
 #pragma once
 // What the Accuracy panel shows, as plain values: the app turns its background ground-truth job
-// (metrics/) into these, so ui/ needs neither the metrics layer nor GL. Figures follow DESIGN.md
-// "How the product is measured" and the `measure` command's summary.
+// (metrics/) into these, so ui/ needs neither the metrics layer nor GL. Figures follow
+// docs/architecture.md#how-the-product-is-measured and the `measure` command's summary.
 #include <cstddef>
 #include <string>
 #include <vector>

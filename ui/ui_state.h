@@ -1,6 +1,7 @@
 #pragma once
-// Everything EditorUi remembers between frames (STYLE.md: no static-local UI state, so a run can
-// be replayed), and the per-frame bundle the panels draw from. Internal to ui/.
+// Everything EditorUi remembers between frames (no static-local UI state, so a run can be
+// replayed: docs/architecture.md#no-static-local-ui-state), and the per-frame bundle the
+// panels draw from. Internal to ui/.
 #include "renderer/settings/validation.h"
 #include "ui/document.h"
 #include "ui/editor_ui.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The one declarative table of settings fields (STYLE.md "One declarative settings table"):
+// The one declarative table of settings fields (docs/architecture.md#one-declarative-settings-table):
 // a row per Settings field with its JSON path, UI label, help, unit, range and what a change
 // costs. ImGui widgets, JSON (de)serialisation, validation, the preset JSON Schema and the docs
 // are all generated from it. Adding a field to settings.h means adding a row in field_table.cpp.

@@ -116,18 +116,6 @@ Settings loadPreset(const fs::path& file) {
     return fromJson(parseText(text, name), name);
 }
 
-bool isJsonSchemaFile(const fs::path& file) {
-    try {
-        const nlohmann::json json = nlohmann::json::parse(readText(file));
-        const auto it = json.is_object() ? json.find("$schema") : json.end();
-        if (it == json.end() || !it->is_string()) return false;
-        const std::string& uri = it->get_ref<const std::string&>();
-        return uri.starts_with("https://json-schema.org/") || uri.starts_with("http://json-schema.org/");
-    } catch (const std::exception&) {
-        return false;  // not readable or not JSON: loadPreset reports it as a preset
-    }
-}
-
 void savePresetAtomic(const Settings& s, const fs::path& file) {
     const std::string name = file.string();
     if (auto problems = validate(s); !problems.empty()) {

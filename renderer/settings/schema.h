@@ -1,6 +1,6 @@
 #pragma once
 // The preset JSON Schema (draft 2020-12), generated from the field table, so editors can
-// complete and check presets. presets/schema.json holds a copy; a test keeps it from going stale.
+// complete and check presets. schema/preset.schema.json holds a copy; a test keeps it from going stale.
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -10,7 +10,7 @@ namespace st {
 nlohmann::ordered_json presetJsonSchemaOrdered();  // keys in a readable order
 nlohmann::json presetJsonSchema();                 // same content, keys sorted
 
-// The exact text of presets/schema.json: presetJsonSchemaOrdered() with 2-space indent and a
+// The exact text of schema/preset.schema.json: presetJsonSchemaOrdered() with 2-space indent and a
 // final newline.
 std::string presetJsonSchemaText();
 

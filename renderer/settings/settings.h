@@ -67,7 +67,7 @@ struct EnumNames<FilterKind> {
 };
 
 // TexelDensity: screen pixels per shadow texel as a heat map (blue < 1/4 wasted, green 1 ideal,
-// red > 1 perspective aliasing; docs/architecture.md "Texel density").
+// red > 1 perspective aliasing; docs/architecture.md#texel-density).
 // Side: the frame from an outside orbit camera with the main frustum, its split planes and each
 // cascade's light box as wireframes.
 enum class View {
@@ -159,7 +159,7 @@ struct CameraKeyframe {
     bool operator==(const CameraKeyframe&) const = default;
 };
 
-// A camera path for the flicker measurement (DESIGN.md "Stability (flicker)"): the *cascade
+// A camera path for the flicker measurement (docs/architecture.md#flicker): the *cascade
 // camera* moves through the keyframes (linearly, evenly over `frames` frames) and drives the
 // cascades, while the preset's `camera` stays put as the observer that sees the shadows.
 struct PathSettings {

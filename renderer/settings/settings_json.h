@@ -45,10 +45,6 @@ Settings fromJson(const nlohmann::json& json, const std::string& sourceName);
 // Relative scene paths are left as written (relative to the preset). Throws SettingsError.
 Settings loadPreset(const std::filesystem::path& file);
 
-// True when `file` is a JSON Schema (its "$schema" names json-schema.org), such as
-// presets/schema.json, which a `presets/*.json` glob picks up beside the presets. Never throws.
-bool isJsonSchemaFile(const std::filesystem::path& file);
-
 // Validates `s` (a preset that would not load is never written), then writes pretty JSON
 // (2-space indent, table order) to "<file>.tmp-<pid>", flushes it to disk and renames it over
 // `file`, so readers see the old or the new preset, never half of one. On failure the temporary

@@ -76,7 +76,7 @@ void checkKeys(const Json& object, const std::string& prefix, Issues& issues) {
     for (const auto& [key, value] : object.items()) {
         const std::string path = join(prefix, key);
         const bool dotted = key.find('.') != std::string::npos;  // "camera.fovY" is not camera/fovY
-        // "$schema" lets editors find presets/schema.json; it carries no setting.
+        // "$schema" lets editors find schema/preset.schema.json; it carries no setting.
         if (path == "$schema" && value.is_string()) continue;
         if (!dotted && (path == "version" || findField(path))) continue;
         if (dotted || childKeys(path).empty()) {
@@ -280,6 +280,13 @@ std::vector<std::string> withSource(const Issues& issues, const std::string& sou
 Settings fromJson(const nlohmann::json& json, const std::string& sourceName) {
     if (!json.is_object()) {
         throw SettingsError(sourceName + ": (top level): expected an object, got " + describe(json));
+    }
+    // A JSON Schema given as a preset (schema/preset.schema.json, say): one message, not a list
+    // of its keywords as unknown keys.
+    if (const auto it = json.find("$schema"); it != json.end() && it->is_string() &&
+                                              it->get_ref<const std::string&>().find("json-schema.org/") != std::string::npos) {
+        throw SettingsError(sourceName + ": $schema: " + it->dump() +
+                            " makes this a JSON Schema, not a preset (a preset's \"$schema\" names preset.schema.json)");
     }
     Issues issues;
     checkVersion(json, issues);

@@ -44,10 +44,13 @@ check "mixed run exits 1" rc 1
 check "mixed run still writes the good image" test -s "$work/mixed/box-over-plane.png"
 check "mixed run reports the skip" err_has "skipped $data/bad-count.json"
 
-run render "$presets/schema.json" "$presets/box-over-plane.json" --out "$work/glob" --size 32x32
-check "presets/*.json with the schema exits 0" rc 0
-check "the schema is skipped with a note" err_has "presets/schema.json is the presets' JSON Schema, not a preset: skipped"
-check "the schema writes no image" bash -c "! ls '$work/glob'/schema* 2>/dev/null"
+# The schema is not in presets/ (so presets/*.json never picks it up); given as a preset, it fails.
+check "presets/ holds no schema" bash -c "! grep -l json-schema.org '$presets'/*.json '$presets'/scenes/*.json"
+run render "$presets/../schema/preset.schema.json" "$presets/box-over-plane.json" --out "$work/schema" --size 32x32
+check "the schema as a preset exits 1" rc 1
+check "the schema as a preset says what it is" err_has "makes this a JSON Schema, not a preset"
+check "the schema writes no image" bash -c "! ls '$work/schema'/preset.schema* 2>/dev/null"
+check "the preset beside it is still written" test -s "$work/schema/box-over-plane.png"
 
 run render "$work/does-not-exist.json" --out "$work/x"
 check "missing preset exits non-zero" rc_nonzero

@@ -55,7 +55,8 @@ TEST(SplitsTest, Lambda1IsLogarithmicHandComputed) {
 }
 
 TEST(SplitsTest, Lambda1IsLogarithmicConstantRatio) {
-    // Seed 000 / STYLE.md: lambda = 1 is fully logarithmic, so z_{i+1} / z_i is the same for all i.
+    // Seed 000 (docs/architecture.md#the-meaning-of-lambda): lambda = 1 is fully logarithmic, so
+    // z_{i+1} / z_i is the same for all i.
     SplitParams p = paper(1.0f);
     p.count = 6;
     p.nearPlane = 0.5f;

@@ -1,4 +1,4 @@
-// The flicker controls of DESIGN.md "Stability": the cascade camera slides sideways by less
+// The flicker controls of docs/architecture.md#flicker: the cascade camera slides sideways by less
 // than a texel per frame while the observer stands still. Without stabilisation the light boxes
 // slide with it and shadow edges crawl (F > 0); a bounding sphere snapped to whole texels moves
 // only by whole texels, so every fixed point keeps its result (F = 0).

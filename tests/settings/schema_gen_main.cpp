@@ -1,6 +1,6 @@
 // st_schema_gen: prints the preset JSON Schema generated from the field table.
 //   st_schema_gen               print it
-//   st_schema_gen --write FILE  write it to FILE (presets/schema.json)
+//   st_schema_gen --write FILE  write it to FILE (schema/preset.schema.json)
 //   st_schema_gen --check FILE  exit 1, saying how to regenerate, if FILE differs (a CTest test)
 #include "renderer/settings/schema.h"
 
@@ -19,7 +19,7 @@ int check(const std::string& file, const std::string& expected) {
     std::cerr << file << (in ? " is stale: it differs from" : " is missing; expected")
               << " the schema generated from renderer/settings/field_table.cpp.\n"
               << "Regenerate it with:  cmake --build <build dir> --target st_update_schema\n"
-              << "(or: <build dir>/tests/settings/st_schema_gen > presets/schema.json) and commit it.\n";
+              << "(or: <build dir>/tests/settings/st_schema_gen > schema/preset.schema.json) and commit it.\n";
     return 1;
 }
 
