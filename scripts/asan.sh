@@ -23,7 +23,14 @@ echo "asan: build took $((built - start)) s"
 
 # verify_asan_link_order=0: the preloaded no_dlclose.so comes before the ASan runtime; it defines
 # nothing but dlclose, so ASan's interceptors are unaffected.
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:verify_asan_link_order=0}
+# intercept_tls_get_addr=0: up to LLVM 16 the runtime's __tls_get_addr interceptor takes a dynamic
+# TLS block whose address is 16 bytes into a page for a pre-2.25 glibc block with a header, reads
+# a bogus range from the words before it, and LeakSanitizer's tracer then dies scanning it at exit
+# ("Tracer caught signal 11", "DTLS 39 at 0x2bf3-0x1800003cf5", no report; google/sanitizers#1322).
+# Where a malloc'd block lands is fixed for a given binary and input, so the crash repeats
+# (golden.scenes.living-room hit it every run). glibc 2.36 mallocs those blocks: LeakSanitizer still
+# sees them as heap, only not as roots, so a leak is still reported, never hidden.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:verify_asan_link_order=0:intercept_tls_get_addr=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0}
 

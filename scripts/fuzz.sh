@@ -42,7 +42,8 @@ echo "fuzz: build took $((SECONDS - start)) s"
 bin=build/asan/tests/fuzz
 out=build/fuzz
 mkdir -p "$out/artifacts" "$out/logs" "$out/corpus-work"
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:symbolize=1}
+# intercept_tls_get_addr=0: see scripts/asan.sh (LeakSanitizer's tracer and dynamic TLS blocks).
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:symbolize=1:intercept_tls_get_addr=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 # Function names and lines in the reports (llvm-14 ships it; the unversioned name needs `llvm`).
 if [[ -z "${ASAN_SYMBOLIZER_PATH:-}" && -x /usr/lib/llvm-14/bin/llvm-symbolizer ]]; then

@@ -54,7 +54,8 @@ TEST_F(EditorAccuracyGLTest, StillFrameGetsMeasureFiguresAndAnOverlay) {
     EXPECT_EQ(accuracy.view().state, State::Settling);
     frame(0.41, settings);
     EXPECT_TRUE(accuracy.view().state == State::Computing || accuracy.finished());
-    EXPECT_EQ(accuracy.overlay(), 0u);
+    // A fast job may end within that update and bring its overlay; while computing there is none.
+    if (accuracy.view().state == State::Computing) EXPECT_EQ(accuracy.overlay(), 0u);
     runUntilFinished(0.41, settings);
     expectMeasured(accuracy.view(), test::measureStill(session, settings));
     EXPECT_NE(accuracy.overlay(), 0u);

@@ -153,7 +153,10 @@ TEST(StillAccuracyTest, CancelledBeforeStartReturnsNothingAndBuildsNothing) {
 }
 
 TEST(StillAccuracyTest, CancelledWhileCastingStopsEarlyAndReturnsNothing) {
-    const StillFrame f = boxFrame(boxScene(), 400, 1000);  // 0.4 M rays on one thread
+    // 1.6 M rays on one thread: seconds of work, so the cancel below lands mid-job even when this
+    // thread is descheduled for a while right after the first row (a loaded 2-core machine).
+    constexpr int kRows = 4000;
+    const StillFrame f = boxFrame(boxScene(), 400, kRows);
     GroundTruthCache cache;
     JobControl control;
     control.threads = 1;
@@ -163,7 +166,7 @@ TEST(StillAccuracyTest, CancelledWhileCastingStopsEarlyAndReturnsNothing) {
     control.cancel = true;
     job.join();
     EXPECT_FALSE(result);
-    EXPECT_LT(control.rowsDone.load(), 1000);  // the rays stopped at a row
+    EXPECT_LT(control.rowsDone.load(), kRows);  // the rays stopped at a row
 }
 
 TEST(StillAccuracyTest, CacheBuildsTheBvhOncePerScene) {

@@ -81,15 +81,14 @@ TEST_F(RenderGLTest, DefaultPresetCascadeViewShowsFourTints) {
     Scene scene = loadScene(s.scene, ST_PRESET_DIR);
     Renderer r(scene);
     Rgba8Image img = test::renderImage(r, s);
-    // The shader's first four tints, sRGB-encoded and normalised to their largest channel.
-    const glm::vec3 tints[4] = {{1.0f, 0.25f, 0.25f}, {0.25f, 1.0f, 0.25f}, {0.3f, 0.45f, 1.0f}, {1.0f, 1.0f, 0.2f}};
+    // The first four tints (the one table, cascadeTint), sRGB-encoded, normalised to their largest channel.
     int counts[4] = {};
     for (std::size_t i = 0; i < img.pixels.size() / 4; ++i) {
         glm::vec3 c(img.pixels[i * 4], img.pixels[i * 4 + 1], img.pixels[i * 4 + 2]);
         float m = std::max({c.r, c.g, c.b});
         if (m < 30.0f) continue;
         for (int t = 0; t < 4; ++t) {
-            glm::vec3 ref = glm::pow(tints[t], glm::vec3(1.0f / 2.2f));
+            glm::vec3 ref = glm::pow(cascadeTint(t), glm::vec3(1.0f / 2.2f));
             if (glm::length(c / m - ref / std::max({ref.r, ref.g, ref.b})) < 0.12f) ++counts[t];
         }
     }
