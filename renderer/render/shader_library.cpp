@@ -1,6 +1,7 @@
 #include "renderer/render/shader_library.h"
 
-#include <regex>
+#include <cctype>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -50,21 +51,45 @@ ExpandedShader expandShader(const std::string& file, const ShaderSources& source
     return out;
 }
 
+namespace {
+// At `pos`, digits then ':' or '(' then digits: the source number and line of a location.
+bool readLocation(const std::string& log, std::size_t pos, std::size_t& end, unsigned long& line) {
+    auto digits = [&](std::size_t from) {
+        std::size_t to = from;
+        while (to < log.size() && std::isdigit(static_cast<unsigned char>(log[to]))) ++to;
+        return to;
+    };
+    const std::size_t numberEnd = digits(pos);
+    if (numberEnd == pos || numberEnd >= log.size() || (log[numberEnd] != ':' && log[numberEnd] != '(')) return false;
+    end = digits(numberEnd + 1);
+    if (end == numberEnd + 1) return false;
+    line = std::stoul(log.substr(numberEnd + 1, end - numberEnd - 1));
+    return true;
+}
+}  // namespace
+
 std::string nameLogFiles(const std::string& log, const std::vector<std::string>& files) {
     // Mesa writes "0:12(5): error: ...", other drivers "ERROR: 0:12: ..." or "0(12) : error".
-    static const std::regex location(R"((^|\n)((?:ERROR|WARNING): )?(\d+)([:(])(\d+))");
     std::string out;
-    std::size_t last = 0;
-    for (auto i = std::sregex_iterator(log.begin(), log.end(), location); i != std::sregex_iterator(); ++i) {
-        const std::smatch& m = *i;
-        const unsigned long line = std::stoul(m[5].str());
-        const std::size_t file = line / kLineBase;
-        if (file >= files.size()) continue;
-        out += log.substr(last, static_cast<std::size_t>(m.position(0)) - last);
-        out += m[1].str() + m[2].str() + files[file] + m[4].str() + std::to_string(line % kLineBase);
-        last = static_cast<std::size_t>(m.position(0) + m.length(0));
+    std::size_t lineStart = 0;
+    while (lineStart < log.size()) {
+        std::size_t lineEnd = log.find('\n', lineStart);
+        lineEnd = lineEnd == std::string::npos ? log.size() : lineEnd + 1;
+        std::size_t pos = lineStart;
+        for (const char* prefix : {"ERROR: ", "WARNING: "})
+            if (log.compare(lineStart, std::strlen(prefix), prefix) == 0) pos += std::strlen(prefix);
+        std::size_t end = 0;
+        unsigned long line = 0;
+        if (readLocation(log, pos, end, line) && line / kLineBase < files.size()) {
+            const std::size_t separator = log.find_first_of(":(", pos);
+            out += log.substr(lineStart, pos - lineStart) + files[line / kLineBase] + log[separator] +
+                   std::to_string(line % kLineBase) + log.substr(end, lineEnd - end);
+        } else {
+            out += log.substr(lineStart, lineEnd - lineStart);
+        }
+        lineStart = lineEnd;
     }
-    return out + log.substr(last);
+    return out;
 }
 
 gpu::Program linkShaderFiles(const std::string& vertexFile, const std::string& fragmentFile,
