@@ -67,13 +67,32 @@ CostReport measureCost(Renderer& r, const Settings& s, int frames) {
     return summariseCost(timed, covered, s.cascades.mapSize);
 }
 
+namespace {
+// The truth of `samples`, traced unless the entry's last frame had exactly these inputs.
+std::vector<std::uint8_t> cachedTruth(MeasureSession::SceneEntry& e, const MeasureSamples& samples, glm::vec3 toSun,
+                                      glm::vec3 eye) {
+    const bool same = !e.lastTruth.empty() && e.lastToSun == toSun && e.lastEye == eye &&
+                      e.lastPositions == samples.position && e.lastNormals == samples.normal &&
+                      e.lastGeometry == samples.geometry;
+    if (!same) {
+        e.lastTruth = e.truth->trace(samples, toSun, eye);
+        e.lastPositions = samples.position;
+        e.lastNormals = samples.normal;
+        e.lastGeometry = samples.geometry;
+        e.lastToSun = toSun;
+        e.lastEye = eye;
+    }
+    return e.lastTruth;
+}
+}  // namespace
+
 // Truth, accuracy and texel density of the frame `s` shows: everything but cost and flicker.
 void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
     auto t0 = Clock::now();
     m.samples = sampleFrame(*e.renderer, pass, s, s);
     m.timings.measurePassMs = msSince(t0);
     t0 = Clock::now();
-    m.truth = e.truth->trace(m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
+    m.truth = cachedTruth(e, m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
     m.timings.groundTruthMs = msSince(t0);
     const ResolutionCheck check(*e.truth, e.renderer->plan(), s.cascades.mapSize, s.camera.position);
     m.accuracy = scoreAccuracy(m.samples, m.truth, s.cascades.count, [&](std::size_t i, bool mapLit) {

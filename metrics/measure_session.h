@@ -68,6 +68,12 @@ public:
     // the BVH (truth) by measure() when it first needs it.
     struct TruthSlot {
         std::unique_ptr<GroundTruth> truth;
+        // The last frame's traced truth and what it depends on. The truth is a function of the
+        // surface samples, the sun and the eye only, not of any shadow setting, so a sweep whose
+        // points share scene, camera, light and size traces it once (compared exactly, not by key).
+        std::vector<glm::vec4> lastPositions, lastNormals, lastGeometry;
+        glm::vec3 lastToSun{0.0f}, lastEye{0.0f};
+        std::vector<std::uint8_t> lastTruth;
     };
     using SceneEntry = SceneCache<TruthSlot>::Entry;
     SceneEntry& entryFor(const Settings& s, const std::filesystem::path& presetDir);

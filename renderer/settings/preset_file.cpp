@@ -64,22 +64,22 @@ nlohmann::json parseText(const std::string& text, const std::string& file) {
     }
 }
 
-std::string readText(const fs::path& file) {
+std::string readText(const fs::path& file, const std::string& kind) {
     const std::string name = file.string();
     std::error_code ec;
     const auto status = fs::status(file, ec);
-    if (!fs::exists(status)) throw SettingsError(name + ": cannot read preset: no such file");
-    if (fs::is_directory(status)) throw SettingsError(name + ": cannot read preset: is a directory, not a JSON file");
+    if (!fs::exists(status)) throw SettingsError(name + ": cannot read " + kind + ": no such file");
+    if (fs::is_directory(status)) throw SettingsError(name + ": cannot read " + kind + ": is a directory, not a JSON file");
     // Presets are a few kilobytes; refusing huge files keeps a mistaken path from filling memory.
     constexpr std::uintmax_t kMaxPresetBytes = 16u << 20;
     if (const auto size = fs::file_size(file, ec); !ec && size > kMaxPresetBytes) {
-        throw SettingsError(name + ": cannot read preset: " + std::to_string(size) + " bytes, more than the " +
-                            std::to_string(kMaxPresetBytes >> 20) + " MiB a preset may have");
+        throw SettingsError(name + ": cannot read " + kind + ": " + std::to_string(size) + " bytes, more than the " +
+                            std::to_string(kMaxPresetBytes >> 20) + " MiB a " + kind + " may have");
     }
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw SettingsError(name + ": cannot read preset: " + std::strerror(errno));
+    if (!in) throw SettingsError(name + ": cannot read " + kind + ": " + std::strerror(errno));
     std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw SettingsError(name + ": cannot read preset: read error");
+    if (in.bad()) throw SettingsError(name + ": cannot read " + kind + ": read error");
     return text;
 }
 
@@ -110,10 +110,12 @@ std::string presetText(const Settings& s, const std::string& name) {
 
 }  // namespace
 
+nlohmann::json loadJsonFile(const fs::path& file, const std::string& kind) {
+    return parseText(readText(file, kind), file.string());
+}
+
 Settings loadPreset(const fs::path& file) {
-    const std::string name = file.string();
-    const std::string text = readText(file);
-    return fromJson(parseText(text, name), name);
+    return fromJson(loadJsonFile(file, "preset"), file.string());
 }
 
 void savePresetAtomic(const Settings& s, const fs::path& file) {

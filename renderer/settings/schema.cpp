@@ -115,6 +115,8 @@ std::string rootDescription() {
 
 }  // namespace
 
+OJson fieldValueSchema(const FieldInfo& field) { return typeSchema(field); }
+
 OJson presetJsonSchemaOrdered() {
     OJson root{{"$schema", "https://json-schema.org/draft/2020-12/schema"},
                {"title", "shadowtune preset"},

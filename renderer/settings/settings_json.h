@@ -45,6 +45,15 @@ Settings fromJson(const nlohmann::json& json, const std::string& sourceName);
 // Relative scene paths are left as written (relative to the preset). Throws SettingsError.
 Settings loadPreset(const std::filesystem::path& file);
 
+// A JSON file of the project's (a preset, a sweep) read with a preset's limits (16 MiB, not a
+// folder) and parsed with "<file>:<line>:<col>: invalid JSON: ..." errors. `kind` names it in
+// messages ("preset", "sweep"). Throws SettingsError.
+nlohmann::json loadJsonFile(const std::filesystem::path& file, const std::string& kind = "preset");
+
+// One value of `field` read exactly as a preset would read it (types, range, enum names);
+// messages name `path`, e.g. "axes[1].values[3]". Throws SettingsError listing the problems.
+FieldValue readFieldValue(const FieldInfo& field, const nlohmann::json& value, const std::string& path);
+
 // Validates `s` (a preset that would not load is never written), then writes pretty JSON
 // (2-space indent, table order) to "<file>.tmp-<pid>", flushes it to disk and renames it over
 // `file`, so readers see the old or the new preset, never half of one. On failure the temporary

@@ -277,6 +277,18 @@ std::vector<std::string> withSource(const Issues& issues, const std::string& sou
 
 }  // namespace
 
+FieldValue readFieldValue(const FieldInfo& field, const nlohmann::json& value, const std::string& path) {
+    Issues issues;
+    std::optional<FieldValue> read = readValueAt(field, value, path, issues);
+    if (!issues.empty() || !read) {
+        std::vector<std::string> messages;
+        for (const auto& issue : issues) messages.push_back(issue.message());
+        if (messages.empty()) messages.push_back(path + ": cannot be read as " + std::string(fieldKindName(field.kind)));
+        throw SettingsError(messages);
+    }
+    return *read;
+}
+
 Settings fromJson(const nlohmann::json& json, const std::string& sourceName) {
     if (!json.is_object()) {
         throw SettingsError(sourceName + ": (top level): expected an object, got " + describe(json));

@@ -1,0 +1,105 @@
+#include "app/sweep_command.h"
+
+#include "app/sweep_progress.h"
+#include "renderer/context/egl_context.h"
+#include "renderer/gpu/debug_output.h"
+#include "renderer/settings/settings_json.h"
+#include "sweep/sweep_run.h"
+
+#include <epoxy/gl.h>
+
+#include <csignal>
+#include <cstdio>
+#include <stdexcept>
+#include <thread>
+
+namespace st::app {
+namespace fs = std::filesystem;
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+// First Ctrl-C: finish the current point, then stop with everything written. Second: quit now
+// (the point files already written stay; the one being measured is not written).
+extern "C" void onInterrupt(int) {
+    if (g_interrupted) {
+        std::signal(SIGINT, SIG_DFL);
+        std::raise(SIGINT);
+    }
+    g_interrupted = 1;
+}
+
+std::string machineText() {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return std::string(renderer ? renderer : "unknown GL renderer") + ", " +
+           std::to_string(std::thread::hardware_concurrency()) + " cores";
+}
+
+// "k/n" with 1 <= k <= n; throws std::invalid_argument otherwise.
+std::pair<int, int> parseShard(const std::string& text) {
+    int k = 0, n = 0;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%d/%d%c", &k, &n, &tail) != 2 || n < 1 || k < 1 || k > n)
+        throw std::invalid_argument("--shard: expected k/n with 1 <= k <= n (e.g. 2/4), got \"" + text + "\"");
+    return {k, n};
+}
+
+int runOnce(const sweep::SweepSpec& spec, sweep::RunOptions ro, bool debugGl) {
+    auto ctx = HeadlessContext::create(debugGl);
+    if (debugGl) gpu::enableDebugOutput();
+    ro.machine = machineText();
+    g_interrupted = 0;
+    std::signal(SIGINT, onInterrupt);
+    ro.stopRequested = [] { return g_interrupted != 0; };
+    SweepProgress progress(stderr);
+    ro.progress = [&](const sweep::Progress& p) { progress(p); };
+    const int before = gpu::seriousDebugMessageCount();
+    const sweep::RunOutcome out = sweep::runSweep(spec, ro);
+    progress.finish();
+    std::signal(SIGINT, SIG_DFL);
+    std::printf("sweep %s: %zu of %zu points measured, %zu resumed; front of %zu points in %s\n", spec.name.c_str(),
+                out.measured, out.total, out.resumed, out.front.size(), (ro.outDir / "front.json").string().c_str());
+    if (gpu::seriousDebugMessageCount() != before) {
+        std::fprintf(stderr, "error: GL debug output reported errors during the sweep\n");
+        return 2;
+    }
+    if (out.stopped) {
+        std::printf("stopped after %zu new points; run the same command again to resume\n", out.measured);
+        return g_interrupted ? 130 : 0;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runSweepCommand(const SweepCommandOptions& opt) {
+    try {
+        sweep::ReportOptions report{opt.error};
+        sweep::errorKey(opt.error);  // refuse a bad --error before any work
+        if (!opt.merge.empty()) {
+            const std::size_t n = sweep::mergeSweeps(opt.merge, opt.outDir, report);
+            std::printf("merged %zu shard folders: %zu points in %s\n", opt.merge.size(), n, opt.outDir.string().c_str());
+            return 0;
+        }
+        if (opt.sweepFile.empty()) throw std::invalid_argument("give a sweep file, or --merge DIR... to join shards");
+        const sweep::SweepSpec spec = sweep::loadSweep(opt.sweepFile);
+        sweep::RunOptions ro;
+        ro.outDir = opt.outDir;
+        if (!opt.shard.empty()) std::tie(ro.shardIndex, ro.shardCount) = parseShard(opt.shard);
+        ro.stopAfter = opt.stopAfter;
+        ro.costFrames = opt.costFrames;
+        ro.report = report;
+        return runOnce(spec, ro, opt.debugGl);
+    } catch (const SettingsError& e) {
+        for (const std::string& m : e.messages()) std::fprintf(stderr, "error: %s\n", m.c_str());
+        return 1;
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+    }
+}
+
+}  // namespace st::app

@@ -1,0 +1,68 @@
+#pragma once
+// A sweep file: a base preset, axes over field-table settings, and reference presets drawn as
+// labelled points (docs/architecture.md "Speed vs accuracy"). Read strictly, like presets:
+// every error names the file, the JSON path and the reason. No GL.
+//
+//   {
+//     "version": 1,
+//     "base": "../scenes/truck-town.json",           // preset path, relative to the sweep file
+//     "set": {"output.width": 640, "output.height": 360},   // optional: fields set on the base
+//     "axes": [
+//       {"field": "cascades.count", "values": [1, 2, 3, 4]},
+//       {"field": "cascades.lambda", "range": {"from": 0.5, "to": 0.95, "step": 0.15}}
+//     ],
+//     "references": ["../nvidia-sdk.json"]           // their cascades, filter and bias on the base
+//   }
+#include "renderer/settings/field_table.h"
+#include "renderer/settings/settings.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace st::sweep {
+
+inline constexpr int kSweepVersion = 1;
+inline constexpr std::size_t kMaxPoints = 100000;  // a typo in a range should not queue a year of work
+
+struct Axis {
+    const FieldInfo* field = nullptr;
+    std::vector<FieldValue> values;
+    std::vector<std::string> valueText;  // each value as JSON text, for labels and the CSV
+};
+
+struct Reference {
+    std::string name;  // the preset's file stem
+    Settings settings; // the base with the reference's cascades, filter and bias
+};
+
+struct SweepSpec {
+    std::filesystem::path file;
+    std::string name;                 // the sweep file's stem
+    std::filesystem::path presetDir;  // where the base preset is: its scene path is relative to it
+    Settings base;
+    std::vector<Axis> axes;
+    std::vector<Reference> references;
+};
+
+// Throws SettingsError listing every problem; a sweep with any invalid point is refused whole.
+SweepSpec loadSweep(const std::filesystem::path& file);
+
+struct Point {
+    std::string id;     // stable across runs and machines: a hash of the point's settings
+    std::string label;  // "cascades.count=2 cascades.fit=sphere" or the reference's name
+    bool reference = false;
+    std::vector<std::string> axisValues;  // per axis, JSON text ("" for references)
+    Settings settings;
+};
+
+// Every combination of the axes (the last axis varies fastest), then the references.
+std::vector<Point> expandPoints(const SweepSpec& spec);
+
+// The share of `points` that shard `index` of `count` runs (index 1..count): every count-th point.
+std::vector<Point> shardOf(const std::vector<Point>& points, int index, int count);
+
+// FNV-1a 64 of the settings' JSON, as 16 hex digits.
+std::string settingsId(const Settings& s);
+
+}  // namespace st::sweep

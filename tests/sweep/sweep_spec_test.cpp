@@ -1,0 +1,102 @@
+// Sweep files: strict reading with the file, JSON path and reason; the grid, ids and shards.
+#include "renderer/settings/settings_json.h"
+#include "sweep/sweep_spec.h"
+#include "tests/sweep/sweep_test_util.h"
+
+#include <set>
+
+using namespace st;
+using namespace st::sweep;
+
+namespace {
+const char* kBase = R"({"version": 1, "scene": "builtin:box-over-plane", "output": {"width": 64, "height": 36}})";
+
+std::string messagesOf(const std::filesystem::path& file) {
+    try {
+        loadSweep(file);
+    } catch (const SettingsError& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(SweepSpecTest, AxesExpandToEveryCombinationLastAxisFastest) {
+    test::TempDir dir;
+    dir.write("base.json", kBase);
+    const auto file = dir.write("s.json", R"({"version": 1, "base": "base.json",
+        "axes": [{"field": "cascades.count", "values": [1, 2]},
+                 {"field": "cascades.lambda", "range": {"from": 0.5, "to": 0.95, "step": 0.15}}]})");
+    const SweepSpec spec = loadSweep(file);
+    ASSERT_EQ(spec.axes.size(), 2u);
+    EXPECT_EQ(spec.axes[1].valueText, (std::vector<std::string>{"0.5", "0.65", "0.8", "0.95"}));
+    const std::vector<Point> points = expandPoints(spec);
+    ASSERT_EQ(points.size(), 8u);
+    EXPECT_EQ(points[0].label, "count=1 lambda=0.5");
+    EXPECT_EQ(points[1].label, "count=1 lambda=0.65");
+    EXPECT_EQ(points[4].label, "count=2 lambda=0.5");
+    EXPECT_EQ(points[7].settings.cascades.count, 2);
+    EXPECT_FLOAT_EQ(points[7].settings.cascades.lambda, 0.95f);
+    std::set<std::string> ids;
+    for (const Point& p : points) ids.insert(p.id);
+    EXPECT_EQ(ids.size(), points.size()) << "every point has its own id";
+    EXPECT_EQ(expandPoints(loadSweep(file))[5].id, points[5].id) << "ids are stable between reads";
+}
+
+TEST(SweepSpecTest, ReferencesTakeTheirMethodOntoTheBase) {
+    test::TempDir dir;
+    dir.write("base.json", kBase);
+    dir.write("ref.json", R"({"version": 1, "scene": "builtin:yard", "camera": {"fovY": 30},
+        "cascades": {"count": 3, "mapSize": 512}, "filter": {"kind": "hard"}, "bias": {"constant": 0.5}})");
+    const SweepSpec spec = loadSweep(dir.write("s.json", R"({"version": 1, "base": "base.json",
+        "set": {"cascades.mapSize": 2048}, "references": ["ref.json"]})"));
+    const std::vector<Point> points = expandPoints(spec);
+    ASSERT_EQ(points.size(), 1u);
+    EXPECT_TRUE(points[0].reference);
+    EXPECT_EQ(points[0].label, "ref");
+    EXPECT_EQ(points[0].settings.scene, "builtin:box-over-plane");  // the base's scene and camera
+    EXPECT_FLOAT_EQ(points[0].settings.camera.fovY, 60.0f);
+    EXPECT_EQ(points[0].settings.cascades.count, 3);  // the reference's method
+    EXPECT_EQ(points[0].settings.cascades.mapSize, 512);
+    EXPECT_EQ(points[0].settings.filter.kind, FilterKind::Hard);
+    EXPECT_EQ(spec.base.cascades.mapSize, 2048);  // "set" applies to the base
+}
+
+TEST(SweepSpecTest, ShardsSplitThePointsWithoutOverlap) {
+    std::vector<Point> points(10);
+    for (int i = 0; i < 10; ++i) points[std::size_t(i)].id = std::to_string(i);
+    std::multiset<std::string> seen;
+    for (int k = 1; k <= 3; ++k)
+        for (const Point& p : shardOf(points, k, 3)) seen.insert(p.id);
+    EXPECT_EQ(seen.size(), 10u);
+    EXPECT_EQ(std::set<std::string>(seen.begin(), seen.end()).size(), 10u);
+    EXPECT_EQ(shardOf(points, 2, 3).front().id, "1");
+}
+
+TEST(SweepSpecTest, BadFilesNameTheFileThePathAndTheReason) {
+    test::TempDir dir;
+    dir.write("base.json", kBase);
+    const auto check = [&](const std::string& body, const std::string& want) {
+        const auto file = dir.write("bad.json", body);
+        const std::string got = messagesOf(file);
+        EXPECT_NE(got.find(file.string() + ": " + want), std::string::npos) << "got: " << got << "\nwant: " << want;
+    };
+    check(R"({"version": 1, "base": "base.json", "axes": [{"field": "cascades.colour", "values": [1]}]})",
+          "axes[0].field: unknown field \"cascades.colour\"");
+    check(R"({"version": 1, "base": "base.json", "axes": [{"field": "cascades.mapSize", "values": [512, 1000]}]})",
+          "axes[0].values[1]: must be a power of two");
+    check(R"({"version": 1, "base": "base.json", "axes": [{"field": "cascades.fit", "range": {"from": 0, "to": 2, "step": 1}}]})",
+          "axes[0].range: a range needs a number field");
+    check(R"({"version": 1, "base": "base.json", "axes": [{"field": "cascades.count", "values": [1]},
+          {"field": "cascades.count", "values": [2]}]})", "axes[1].field: sweeps cascades.count twice");
+    check(R"({"version": 1, "base": "base.json", "axes": [{"field": "scene", "values": ["builtin:yard"]}]})",
+          "axes[0].field: \"scene\" cannot be swept");
+    check(R"({"version": 1, "base": "base.json", "colour": 1, "axes": [{"field": "cascades.count", "values": [1]}]})",
+          "colour: unknown key");
+    check(R"({"version": 2, "base": "base.json", "axes": [{"field": "cascades.count", "values": [1]}]})", "version: must be 1");
+    check(R"({"version": 1, "base": "nowhere.json"})", "base: ");
+    check(R"({"version": 1, "base": "base.json", "set": {"cascades.scheme": "manual"},
+          "axes": [{"field": "cascades.count", "values": [2]}]})", "axes: point count=2: cascades.manualSplits");
+    check(R"({"version": 1, "base": "base.json"})", "axes: a sweep needs at least one axis or reference");
+    EXPECT_NE(messagesOf(dir.write("broken.json", "{\"version\": 1,")).find("broken.json:1:"), std::string::npos);
+}
