@@ -29,6 +29,10 @@ struct ScatterChart {
     std::vector<ChartPoint> points;
     std::vector<std::string> tableHeader;             // columns of the front table
     std::vector<std::vector<std::string>> tableRows;  // one row per front point
+    // Page size in pixels (SVG: the same in user units); 0 = the default, 1200 wide and 900 high,
+    // taller by the front table. Text and margins scale with the width.
+    int width = 0;
+    int height = 0;
 };
 
 struct Series {
@@ -47,6 +51,8 @@ struct LineChart {
     bool logY = false;
     std::vector<std::string> xTickLabels;
     std::vector<Series> series;
+    int width = 0;   // as ScatterChart: 0 = 1200
+    int height = 0;  // 0 = 900
 };
 
 // Throw std::runtime_error naming the file on failure; `png` and `svg` may be empty to skip one.
