@@ -153,6 +153,9 @@ Outputs measureBoth(const CompareOptions& opt, const Side& a, const Side& b) {
 }  // namespace
 
 int runCompare(const CompareOptions& opt) {
+    struct ReleaseAtEnd {
+        ~ReleaseAtEnd() { releaseTextCaches(); }
+    } release;
     std::optional<std::pair<Side, Side>> sides;
     try {
         sides = loadSides(opt);

@@ -22,7 +22,8 @@ struct CompareOptions {
 // Measures both presets and writes OUT/side-by-side.png, split.png, shadow-diff.png (when both
 // see the same view) and compare.json, then prints the table of figures and deltas. Both presets
 // are read and checked before anything is created; any failure writes nothing. Returns the exit
-// code: 0, 1 (a preset failed to load or measure), 2 (the output folder or the GL context).
+// code: 0; 1 when a preset (or B on A's view) is invalid, or the GL context or a measurement
+// failed; 2 when the output folder cannot be created.
 int runCompare(const CompareOptions& opt);
 
 }  // namespace st::app

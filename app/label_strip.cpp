@@ -1,6 +1,7 @@
 #include "app/label_strip.h"
 
 #include <cairo.h>
+#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <cmath>
@@ -181,6 +182,11 @@ void drawStrip(Rgba8Image& img, int x, int y, int width, int height, const Strip
     }
     cairo_surface_flush(surface.get());
     swapRedBlue(img);
+}
+
+void releaseTextCaches() {
+    cairo_debug_reset_static_data();
+    FcFini();
 }
 
 }  // namespace st::app

@@ -33,4 +33,8 @@ int stripHeight(const Strip& strip, int width);
 // `strip` onto it (laid out as stripHeight() does).
 void drawStrip(Rgba8Image& img, int x, int y, int width, int height, const Strip& strip);
 
+// Frees cairo's and fontconfig's process-wide font caches, which LeakSanitizer otherwise reports
+// at exit. Call when no strip will be drawn for a while (they are rebuilt on the next use).
+void releaseTextCaches();
+
 }  // namespace st::app

@@ -11,7 +11,7 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libglfw3-dev libimgui-dev
   libembree-dev
-  libcairo2-dev
+  libcairo2-dev libfontconfig-dev
   libgtest-dev googletest
   xvfb xauth
   clang-14 libclang-rt-14-dev llvm-14

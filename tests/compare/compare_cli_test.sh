@@ -85,6 +85,14 @@ run compare "$work/box-256.json" "$data/bad-count.json" --out "$work/bad2" "${si
 check "invalid preset exits non-zero" rc_nonzero
 check "invalid preset: file, JSON path, reason" err_has "bad-count.json: cascades.count: must be in 1..8, got 12"
 check "invalid preset writes nothing" test ! -e "$work/bad2"
+# B valid alone, but its manual split lies past A's far plane (100 m): B on A's view is invalid.
+jq '.cascades.scheme = "manual" | .cascades.manualSplits = [300] | .camera.farPlane = 400 | del(."$schema")' \
+  "$presets/box-over-plane.json" >"$work/far-split.json"
+run compare "$work/box-256.json" "$work/far-split.json" --out "$work/bad4" "${size[@]}"
+check "B invalid on A's view exits non-zero" rc_nonzero
+check "B invalid on A's view: both files, JSON path, reason" \
+  err_has "far-split.json on the view of $work/box-256.json: cascades.manualSplits[0]: must be in"
+check "B invalid on A's view writes nothing" test ! -e "$work/bad4"
 touch "$work/file" && run compare "$work/box-256.json" "$work/box-256.json" --out "$work/file/sub" "${size[@]}"
 check "unusable output folder exits non-zero" rc_nonzero
 check "unusable output folder is named" err_has "$work/file/sub"

@@ -156,5 +156,12 @@ TEST(CompareImagesTest, ShadowDiffShowsOnlyTheClassesPresent) {
     EXPECT_EQ(count(app::shadowDiffImage(metrics::shadowDiff(a, b), "a", "b"), 32, onlyB), 1);
 }
 
+// cairo's and fontconfig's caches go before LeakSanitizer looks (scripts/asan.sh).
+class ReleaseTextCaches : public ::testing::Environment {
+public:
+    void TearDown() override { app::releaseTextCaches(); }
+};
+const auto* const kRelease = ::testing::AddGlobalTestEnvironment(new ReleaseTextCaches);
+
 }  // namespace
 }  // namespace st
