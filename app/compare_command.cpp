@@ -51,8 +51,14 @@ void checkMerged(const Side& b, const Side& a) {
 std::pair<Side, Side> loadSides(const CompareOptions& opt) {
     Side a{"A", opt.a.stem().string(), opt.a, opt.a.parent_path(), loadPreset(opt.a)};
     Side b{"B", opt.b.stem().string(), opt.b, opt.b.parent_path(), loadPreset(opt.b)};
-    if (!opt.keepBScene) b.settings = onViewOf(a.settings, b.settings), b.dir = a.dir;
-    if (opt.width) a.settings.output.width = *opt.width, a.settings.output.height = *opt.height;
+    if (!opt.keepBScene) {
+        b.settings = onViewOf(a.settings, b.settings);
+        b.dir = a.dir;
+    }
+    if (opt.width) {
+        a.settings.output.width = *opt.width;
+        a.settings.output.height = *opt.height;
+    }
     b.settings.output = a.settings.output;
     a.settings.output.view = b.settings.output.view = View::Shaded;
     checkMerged(b, a);
@@ -78,27 +84,25 @@ Measured measureSide(metrics::MeasureSession& session, const Side& side, const C
     return r;
 }
 
-std::string value(metrics::FigureUnit unit, std::optional<double> v) { return metrics::formatValue(unit, v); }
-
 // The label under a picture: the preset and its headline figures.
 Strip headline(const Side& side, const std::vector<metrics::CompareFigure>& figures, bool isA) {
-    const auto pick = [&](const std::string& key) {
+    const auto find = [&](const std::string& key) -> const metrics::CompareFigure& {
         for (const metrics::CompareFigure& f : figures)
-            if (f.key == key) return std::pair{f.unit, isA ? f.a : f.b};
+            if (f.key == key) return f;
         throw std::logic_error("no figure " + key);
     };
-    const auto [su, shadowMs] = pick("cost.gpuShadowMs");
-    const auto [mu, mainMs] = pick("cost.gpuMainMs");
-    const auto [bu, bytes] = pick("cost.shadowMapBytes");
-    const auto [eu, misclassified] = pick("accuracy.misclassified");
-    const auto [fu, filtered] = pick("accuracy.filteredError");
+    const auto raw = [&](const std::string& key) { return (isA ? find(key).a : find(key).b).value_or(0.0); };
+    const auto text = [&](const std::string& key) {
+        const metrics::CompareFigure& f = find(key);
+        return metrics::formatValue(f.unit, isA ? f.a : f.b);
+    };
     char gpu[64];
-    std::snprintf(gpu, sizeof gpu, "GPU shadow %.2f + main %.2f ms", shadowMs.value_or(0.0), mainMs.value_or(0.0));
+    std::snprintf(gpu, sizeof gpu, "GPU shadow %.2f + main %.2f ms", raw("cost.gpuShadowMs"), raw("cost.gpuMainMs"));
     return {{side.tag + ": " + side.name, std::nullopt, true},
-            {"misclassified " + value(eu, misclassified)},
-            {"filtered error " + value(fu, filtered)},
+            {"misclassified " + text("accuracy.misclassified")},
+            {"filtered error " + text("accuracy.filteredError")},
             {gpu},
-            {"shadow maps " + value(bu, bytes)}};
+            {"shadow maps " + text("cost.shadowMapBytes")}};
 }
 
 bool sameView(const Settings& a, const Settings& b) {
