@@ -8,5 +8,6 @@ void addRenderCommand(CLI::App& cli, int& exitCode);
 void addEditorCommand(CLI::App& cli, int& exitCode);
 void addMeasureCommand(CLI::App& cli, int& exitCode);
 void addSweepCommand(CLI::App& cli, int& exitCode);
+void addCompareCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     st::app::addEditorCommand(cli, exitCode);
     st::app::addMeasureCommand(cli, exitCode);
     st::app::addSweepCommand(cli, exitCode);
+    st::app::addCompareCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

@@ -1,14 +1,11 @@
 // `shadowtune measure`: command-line options of the measurement command.
 #include "app/commands.h"
 #include "app/measure_command.h"
+#include "app/size_option.h"
 
-#include <charconv>
 #include <cstdio>
 #include <memory>
-#include <optional>
 #include <string>
-#include <system_error>
-#include <utility>
 
 namespace st::app {
 namespace {
@@ -18,20 +15,6 @@ struct MeasureArgs {
     std::string size;
     bool noFlicker = false;
 };
-
-// "WxH" -> the number before and after the 'x', each 16..8192 (the rule of `render --size`).
-// Parsed by hand: <regex> trips GCC 12's -Wmaybe-uninitialized in sanitizer builds.
-std::optional<std::pair<int, int>> parseSize(const std::string& text) {
-    const auto x = text.find('x');
-    if (x == std::string::npos) return std::nullopt;
-    int w = 0, h = 0;
-    const char* end = text.data() + text.size();
-    const auto [wEnd, wErr] = std::from_chars(text.data(), text.data() + x, w);
-    const auto [hEnd, hErr] = std::from_chars(text.data() + x + 1, end, h);
-    const bool whole = wErr == std::errc() && hErr == std::errc() && wEnd == text.data() + x && hEnd == end;
-    if (!whole || w < 16 || h < 16 || w > 8192 || h > 8192) return std::nullopt;
-    return std::pair{w, h};
-}
 
 bool applySize(MeasureArgs& a) {
     if (a.size.empty()) return true;

@@ -12,6 +12,7 @@ packages=(
   libglfw3-dev libimgui-dev
   libembree-dev
   libplplot-dev plplot-driver-cairo
+  libcairo2-dev libfontconfig-dev
   libgtest-dev googletest
   xvfb xauth
   clang-14 libclang-rt-14-dev llvm-14
