@@ -7,5 +7,6 @@ namespace st::app {
 void addRenderCommand(CLI::App& cli, int& exitCode);
 void addEditorCommand(CLI::App& cli, int& exitCode);
 void addMeasureCommand(CLI::App& cli, int& exitCode);
+void addExportCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
     st::app::addRenderCommand(cli, exitCode);
     st::app::addEditorCommand(cli, exitCode);
     st::app::addMeasureCommand(cli, exitCode);
+    st::app::addExportCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }
