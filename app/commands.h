@@ -9,5 +9,6 @@ void addEditorCommand(CLI::App& cli, int& exitCode);
 void addMeasureCommand(CLI::App& cli, int& exitCode);
 void addSweepCommand(CLI::App& cli, int& exitCode);
 void addCompareCommand(CLI::App& cli, int& exitCode);
+void addExportCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     st::app::addMeasureCommand(cli, exitCode);
     st::app::addSweepCommand(cli, exitCode);
     st::app::addCompareCommand(cli, exitCode);
+    st::app::addExportCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

@@ -30,7 +30,8 @@ for f in share/shadowtune/presets/default.json share/shadowtune/presets/scenes/f
   check "installed $f" test -s "$P/$f"
 done
 # Each installed preset's "$schema" resolves next to it.
-for preset in "$P"/share/shadowtune/presets/*.json "$P"/share/shadowtune/presets/scenes/*.json; do
+for preset in "$P"/share/shadowtune/presets/*.json "$P"/share/shadowtune/presets/scenes/*.json \
+              "$P"/share/shadowtune/presets/engines/*.json; do
   schema=$(sed -n 's/^ *"\$schema": *"\([^"]*\)".*/\1/p' "$preset")
   check "$(basename "$preset")'s \$schema ($schema) resolves" test -s "$(dirname "$preset")/$schema"
 done

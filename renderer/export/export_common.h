@@ -1,0 +1,39 @@
+#pragma once
+// What every engine mapping needs from a preset: its split depths, the end of the shadowed range
+// and the texel world size of the first cascade, which converts texel-relative biases to metres.
+#include "renderer/export/engine_export.h"
+
+#include <vector>
+
+namespace st::xport {
+
+struct PresetFacts {
+    std::vector<float> splits;  // count + 1 view depths, metres (renderer/csm/splits.h)
+    float nearPlane = 0.0f;     // camera near: where the first cascade starts
+    float end = 0.0f;           // shadowDistance, or the camera far plane when it is 0
+    std::vector<float> texel;   // metres per texel of each cascade as shadowtune fits it (light_fit.h)
+};
+
+// Uses the preset's own output aspect, fit and map size; the z extension does not change a
+// texel's x,y size, so no scene is loaded (scene bounds are not needed).
+PresetFacts presetFacts(const Settings& s);
+
+// (z_i - near) / (end - near) for the interior splits i = 1..count-1: Godot, Filament, Unreal.
+std::vector<double> fractionsOfRange(const PresetFacts& f);
+// z_i / end for the interior splits: three.js breaks, Unity cascade splits.
+std::vector<double> fractionsOfEnd(const PresetFacts& f);
+
+double round6(double v);  // six significant decimals, so printed values do not carry float noise
+nlohmann::json numbers(const std::vector<double>& v);
+
+// The texel world size of the first cascade as text, for notes: "0.00885 m".
+std::string texelNote(const PresetFacts& f);
+
+EngineExport exportGodot(const Settings& s, const PresetFacts& f);
+EngineExport exportUnity(const Settings& s, const PresetFacts& f);
+EngineExport exportUnreal(const Settings& s, const PresetFacts& f);
+EngineExport exportBevy(const Settings& s, const PresetFacts& f);
+EngineExport exportThreeJs(const Settings& s, const PresetFacts& f);
+EngineExport exportFilament(const Settings& s, const PresetFacts& f);
+
+}  // namespace st::xport

@@ -1,0 +1,61 @@
+// Filament: LightManager::ShadowOptions of a directional light, and the View's shadow type.
+// Sources (google/filament): filament/include/filament/LightManager.h (ShadowOptions field
+// initialisers and their doc comments: split positions from 0 = camera near to 1 = far or
+// shadowFar, constantBias in world units), shaders/src/shadowing.fs (ShadowSample_PCF_Low:
+// hardware PCF + 3x3 Gaussian from 4 bilinear taps, the default PCF quality).
+#include "renderer/export/export_common.h"
+
+#include "renderer/settings/number_text.h"
+
+#include <algorithm>
+
+namespace st::xport {
+namespace {
+
+using M = Mapping;
+
+void addCascades(EngineExport& e, const Settings& s, const PresetFacts& f) {
+    const CascadeSettings& c = s.cascades;
+    e.add("mapSize", c.mapSize, M::Exact, "cascades.mapSize, per cascade");
+    e.add("shadowCascades", std::min(c.count, 4), c.count <= 4 ? M::Exact : M::Approximated,
+          c.count <= 4 ? "cascades.count" : "Filament has at most 4 cascades (CONFIG_MAX_SHADOW_CASCADES)");
+    std::vector<double> pos = fractionsOfRange(f);
+    const bool used = !pos.empty();
+    const std::vector<double> defaults{0.125, 0.25, 0.5};
+    for (size_t i = pos.size(); i < 3; ++i) pos.push_back(defaults[i]);
+    e.add("cascadeSplitPositions", numbers(pos), used ? M::Exact : M::NoEquivalent,
+          used ? "(z_i - near) / (shadowFar or far - near); entries past count-1 are Filament's defaults"
+               : "unused with one cascade; Filament's defaults kept");
+    e.add("shadowFar", round6(c.shadowDistance), M::Exact, "cascades.shadowDistance; 0 = the camera far plane");
+    e.add("stable", c.stabilize, M::Exact, "cascades.stabilize: snap to texels, rotation-invariant size");
+}
+
+void addBias(EngineExport& e, const Settings& s) {
+    const BiasSettings& b = s.bias;
+    e.add("constantBias", round6(b.constant), M::Exact, "metres, shadows moved away from the light");
+    e.add("normalBias", round6(b.normalOffset), M::Approximated,
+          "scales Filament's maximum sampling error (about a texel) along the normal; shadowtune's is in texels");
+    e.add("polygonOffsetSlope", round6(b.slope), M::Approximated,
+          "glPolygonOffset factor: depth slope per texel, ~ texel x tan, shadowtune's slope unit");
+    e.add("polygonOffsetConstant", 0.5, M::NoEquivalent, "units of depth resolution; Filament's default kept");
+    const FilterKind k = s.filter.kind;
+    e.add("View::setShadowType", "PCF", k == FilterKind::Hard ? M::NoEquivalent : M::Approximated,
+          "PCF (default) samples with ShadowSample_PCF_Low, a 3x3 Gaussian from 4 hardware-compared taps");
+    if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "not a ShadowOptions field");
+}
+
+}  // namespace
+
+EngineExport exportFilament(const Settings& s, const PresetFacts& f) {
+    EngineExport e{Engine::Filament, "Filament: LightManager::ShadowOptions", {}};
+    addCascades(e, s, f);
+    addBias(e, s);
+    e.add("lispsm", false, M::NoEquivalent,
+          "shadowtune does not warp the light projection; Filament's default is true (LiSPSM)");
+    e.add("(light box fit)", "tight to the visible casters and receivers",
+          s.cascades.fit == FitMode::Cascade ? M::Approximated : M::NoEquivalent,
+          "Filament fits each light frustum to the slice and the scene; shadowtune's cascade fit is the slice alone");
+    return e;
+}
+
+}  // namespace st::xport

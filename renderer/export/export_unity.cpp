@@ -1,0 +1,83 @@
+// Unity URP: UniversalRenderPipelineAsset shadow settings.
+// Sources (Unity-Technologies/Graphics): Packages/com.unity.render-pipelines.universal/Runtime/Data/
+// UniversalRenderPipelineAsset.cs (field initialisers: the defaults), Runtime/ShadowUtils.cs
+// GetShadowBias (depth and normal bias are multiples of the cascade's texel size, x2.5 with soft
+// shadows), ShaderLibrary/Shadows.hlsl ApplyShadowBias (depth bias along the light, normal bias
+// scaled by 1 - N.L).
+#include "renderer/export/export_common.h"
+
+#include "renderer/settings/number_text.h"
+
+#include <algorithm>
+
+namespace st::xport {
+namespace {
+
+using M = Mapping;
+
+void addCascades(EngineExport& e, const Settings& s, const PresetFacts& f) {
+    const int n = s.cascades.count;
+    e.add("shadowCascadeCount", std::min(n, 4), n <= 4 ? M::Exact : M::Approximated,
+          n <= 4 ? "cascades.count" : "URP has at most 4 cascades");
+    // URP splits are fractions of the shadow distance measured from the camera.
+    const std::vector<double> fr = fractionsOfEnd(f);
+    auto pick = [&](size_t count, std::vector<double> urpDefault) {
+        return fr.size() + 1 == count ? std::pair{numbers(fr), M::Exact} : std::pair{numbers(urpDefault), M::NoEquivalent};
+    };
+    const auto [c2, m2] = pick(2, {0.25});
+    const auto [c3, m3] = pick(3, {0.1, 0.3});
+    const auto [c4, m4] = pick(4, {0.067, 0.2, 0.467});
+    const char* used = "z_i / shadowDistance";
+    const char* unused = "unused with this cascade count; URP's default kept";
+    e.add("cascade2Split", c2.front(), m2, m2 == M::Exact ? used : unused);
+    e.add("cascade3Split", c3, m3, m3 == M::Exact ? used : unused);
+    e.add("cascade4Split", c4, m4, m4 == M::Exact ? used : unused);
+    e.add("shadowDistance", round6(f.end), M::Exact, "cascades.shadowDistance, or the camera far plane when 0");
+    // ShadowUtils: 2..4 cascades share one atlas of this size in 2x2 tiles, each half its side.
+    const int atlas = n == 1 ? s.cascades.mapSize : s.cascades.mapSize * 2;
+    e.add("mainLightShadowmapResolution", std::min(atlas, 8192), atlas <= 8192 ? M::Exact : M::Approximated,
+          n == 1 ? "cascades.mapSize" : "2x2 tiles of cascades.mapSize in one atlas");
+}
+
+void addBiasAndFilter(EngineExport& e, const Settings& s, const PresetFacts& f) {
+    const BiasSettings& b = s.bias;
+    const bool soft = s.filter.kind == FilterKind::PcfNxN;
+    const double texel = f.texel.front() * (soft ? 2.5 : 1.0);  // ShadowUtils.GetShadowBias: x2.5 when soft
+    e.add("shadowDepthBias", round6(b.constant / texel), M::Approximated,
+          "bias.constant / texel " + texelNote(f) + (soft ? " / 2.5 (soft shadows)" : "") +
+              "; URP's depth bias is a multiple of each cascade's texel, shadowtune's is metres");
+    e.add("shadowNormalBias", round6(b.normalOffset / (soft ? 2.5 : 1.0)), M::Approximated,
+          "texels, as bias.normalOffset; URP moves the caster inward, scaled by 1 - N.L");
+    e.add("supportsSoftShadows", soft, s.filter.kind == FilterKind::Hard ? M::Approximated : M::Exact,
+          s.filter.kind == FilterKind::Hard ? "URP's hard shadows still take one hardware-compared (2x2) tap"
+                                            : "off: one hardware-compared tap = pcf2x2; on: tent PCF");
+    if (soft)
+        e.add("softShadowQuality", s.filter.size <= 3 ? "Low" : s.filter.size <= 5 ? "Medium" : "High", M::Approximated,
+              "tent-filtered PCF (Low ~3x3, Medium 5x5, High 7x7), not a box of NxN taps");
+    if (b.slope > 0.0f) e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "URP has no slope-scaled bias");
+    if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "URP has no receiver-plane bias");
+}
+
+void addUnmapped(EngineExport& e, const Settings& s) {
+    const CascadeSettings& c = s.cascades;
+    const bool stable = c.fit == FitMode::Sphere && c.stabilize;
+    e.add("(cascade fit)", "stable fit: bounding sphere, texel-snapped", stable ? M::Approximated : M::NoEquivalent,
+          stable ? "shadowtune's sphere fit with snapping; URP's spheres come from the engine's culling code"
+                 : "URP always uses a stable sphere fit");
+    e.add("cascadeBorder", 0.2, M::NoEquivalent,
+          "URP fades the last cascade out over this fraction; shadowtune has no fade (URP's default kept)");
+    if (c.blendBand > 0.0f)
+        e.add("(cascade blending)", round6(c.blendBand), M::NoEquivalent, "URP does not blend between cascades");
+}
+
+}  // namespace
+
+EngineExport exportUnity(const Settings& s, const PresetFacts& f) {
+    EngineExport e{Engine::Unity, "Unity URP: UniversalRenderPipelineAsset shadows", {}};
+    addCascades(e, s, f);
+    addBiasAndFilter(e, s, f);
+    addUnmapped(e, s);
+    return e;
+}
+
+}  // namespace st::xport

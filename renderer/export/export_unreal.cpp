@@ -1,0 +1,72 @@
+// Unreal Engine 5, non-virtual cascaded shadow maps of a movable DirectionalLight.
+// Sources: Engine/Source/Runtime/Engine/Private/Components/DirectionalLightComponent.cpp
+// (UDirectionalLightComponent constructor: the defaults; FDirectionalLightSceneProxy::
+// GetSplitDistance and ComputeAccumulatedScale: the split positions), r.Shadow.MaxCSMResolution,
+// r.Shadow.CSMDepthBias and r.Shadow.CSMSlopeScaleDepthBias (ShadowRendering.cpp). UE works in cm.
+#include "renderer/export/unreal_splits.h"
+
+#include "renderer/export/export_common.h"
+#include "renderer/settings/number_text.h"
+
+#include <algorithm>
+
+namespace st::xport {
+namespace {
+
+using M = Mapping;
+
+// r.Shadow.CSMDepthBias default 10 (ShadowRendering.cpp), x ShadowBias, x the cascade's
+// world-space texel scale (bounds radius / resolution = half a texel): 10 * 0.5 * r / res
+// = 2.5 texels at the defaults. As texels per unit of ShadowBias: 10 / 2 = 5.
+constexpr double kCsmDepthBiasTexelsPerUnit = 5.0;
+constexpr double kCsmSlopeScaleDepthBias = 3.0;  // r.Shadow.CSMSlopeScaleDepthBias default
+
+void addSplits(EngineExport& e, const Settings& s, const PresetFacts& f) {
+    const int n = s.cascades.count;
+    e.add("DynamicShadowCascades", n, M::Exact, "cascades.count (capped by r.Shadow.CSM.MaxCascades, default 10)");
+    e.add("DynamicShadowDistanceMovableLight", round6(f.end * 100.0), M::Exact,
+          "cascades.shadowDistance (or the camera far) in cm");
+    const std::vector<double> fr = fractionsOfRange(f);
+    const ExponentFit fit = fitDistributionExponent(fr, n);
+    const double errorMetres = fit.maxError * (double(f.end) - f.nearPlane);
+    e.add("CascadeDistributionExponent", round6(fit.exponent), errorMetres <= 0.01 ? M::Exact : M::Approximated,
+          n < 2 ? "one cascade: no splits (UE's default 3 kept)"
+                : "least-squares fit of ComputeAccumulatedScale (split i at near + sum_{j<i} E^j / sum_{j<N} E^j "
+                  "x (distance - near)) to the preset's splits; worst split off by " +
+                      formatNumber(round6(errorMetres)) + " m");
+    e.add("CascadeTransitionFraction", round6(s.cascades.blendBand), M::Approximated,
+          "UE extends each cascade past its split by this fraction of its depth range and fades there; "
+          "shadowtune's blendBand fades inside the last fraction");
+    e.add("r.Shadow.MaxCSMResolution", s.cascades.mapSize, M::Exact, "cascades.mapSize: every cascade gets this size");
+}
+
+void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
+    const BiasSettings& b = s.bias;
+    e.add("ShadowBias", round6(b.constant / (kCsmDepthBiasTexelsPerUnit * f.texel.front())), M::Approximated,
+          "bias.constant / (5 texels, texel " + texelNote(f) +
+              "): UE's CSM depth bias = r.Shadow.CSMDepthBias 10 x ShadowBias x half a texel, per cascade");
+    e.add("ShadowSlopeBias", round6(b.slope / kCsmSlopeScaleDepthBias), M::Approximated,
+          "bias.slope / r.Shadow.CSMSlopeScaleDepthBias 3; UE's slope bias is in its depth-bias unit, "
+          "the conversion to shadowtune's texel x tan unit is not confirmed against the UE5 source");
+    if (b.normalOffset > 0.0f)
+        e.add("(normal offset)", round6(b.normalOffset), M::NoEquivalent, "UE's CSM has no user normal-offset bias");
+    e.add("r.Shadow.FilterMethod", 0, s.filter.kind == FilterKind::PcfNxN ? M::Approximated : M::NoEquivalent,
+          "0 = PCF; UE's kernel is set by r.ShadowQuality (default 5), not by a tap count");
+}
+
+}  // namespace
+
+EngineExport exportUnreal(const Settings& s, const PresetFacts& f) {
+    EngineExport e{Engine::Unreal, "Unreal Engine 5: DirectionalLight cascaded shadow maps (non-virtual)", {}};
+    addSplits(e, s, f);
+    addBias(e, s, f);
+    const CascadeSettings& c = s.cascades;
+    e.add("(cascade fit)", "bounding sphere, texel-snapped", c.fit == FitMode::Sphere && c.stabilize ? M::Approximated
+                                                                                                     : M::NoEquivalent,
+          "UE fits each cascade's bounding sphere and snaps it; other fits cannot be set");
+    e.add("ShadowDistanceFadeoutFraction", 0.1, M::NoEquivalent, "shadowtune does not fade out; UE's default kept");
+    e.add("r.Shadow.Virtual.Enable", 0, M::Exact, "virtual shadow maps off: the cascaded path these settings drive");
+    return e;
+}
+
+}  // namespace st::xport

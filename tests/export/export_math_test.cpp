@@ -1,0 +1,85 @@
+// The split-fraction math against hand computations, exact fields following the preset, and the
+// engine names.
+#include "renderer/export/engine_export.h"
+#include "renderer/export/unreal_splits.h"
+
+#include <gtest/gtest.h>
+
+namespace st::xport {
+namespace {
+
+// Near 1, splits 10, 30, 60, end 100: easy fractions by hand.
+Settings handSplits() {
+    Settings s;
+    s.camera.nearPlane = 1.0f;
+    s.camera.farPlane = 400.0f;
+    s.cascades.count = 4;
+    s.cascades.scheme = SplitScheme::Manual;
+    s.cascades.manualSplits = {10.0f, 30.0f, 60.0f};
+    s.cascades.shadowDistance = 100.0f;
+    return s;
+}
+
+double number(const EngineExport& e, const char* name) { return e.find(name)->value.get<double>(); }
+
+TEST(ExportMathTest, GodotAndFilamentSplitsAreFractionsOfTheRangeFromNear) {
+    const EngineExport g = exportSettings(handSplits(), Engine::Godot);
+    EXPECT_NEAR(number(g, "directional_shadow_split_1"), 9.0 / 99.0, 1e-6);   // (10 - 1) / (100 - 1)
+    EXPECT_NEAR(number(g, "directional_shadow_split_2"), 29.0 / 99.0, 1e-6);  // (30 - 1) / 99
+    EXPECT_NEAR(number(g, "directional_shadow_split_3"), 59.0 / 99.0, 1e-6);  // (60 - 1) / 99
+    const nlohmann::json pos = exportSettings(handSplits(), Engine::Filament).find("cascadeSplitPositions")->value;
+    EXPECT_NEAR(pos[1].get<double>(), 29.0 / 99.0, 1e-6);
+}
+
+TEST(ExportMathTest, UnityAndThreeJsSplitsAreFractionsOfTheEnd) {
+    EXPECT_EQ(exportSettings(handSplits(), Engine::Unity).find("cascade4Split")->value,
+              nlohmann::json({0.1, 0.3, 0.6}));
+    const EngineExport t = exportSettings(handSplits(), Engine::ThreeJs);
+    EXPECT_EQ(t.find("breaks")->value, nlohmann::json({0.1, 0.3, 0.6, 1.0}));
+    EXPECT_EQ(t.find("mode")->value, "custom");  // manual splits go through customSplitsCallback
+}
+
+TEST(ExportMathTest, UnrealAccumulatedScaleAndExponentFit) {
+    EXPECT_DOUBLE_EQ(accumulatedScale(3.0, 1, 3), 1.0 / 13.0);  // 1 / (1 + 3 + 9)
+    EXPECT_DOUBLE_EQ(accumulatedScale(3.0, 2, 3), 4.0 / 13.0);
+    EXPECT_DOUBLE_EQ(accumulatedScale(1.0, 1, 4), 0.25);        // exponent 1: uniform
+    EXPECT_NEAR(fitDistributionExponent({1.0 / 7.0, 3.0 / 7.0}, 3).exponent, 2.0, 1e-6);  // 1, 2, 4
+    const ExponentFit fit = fitDistributionExponent({9.0 / 99.0, 29.0 / 99.0, 59.0 / 99.0}, 4);
+    EXPECT_GT(fit.maxError, 0.0);  // 10/30/60 is no geometric series: approximated, with its error
+    EXPECT_EQ(exportSettings(handSplits(), Engine::Unreal).find("CascadeDistributionExponent")->mapping,
+              Mapping::Approximated);
+}
+
+TEST(ExportMathTest, ExactFieldsFollowThePreset) {
+    Settings s = handSplits();
+    s.cascades.shadowDistance = 80.0f;
+    s.cascades.mapSize = 512;
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "directional_shadow_max_distance"), 80.0);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unity), "shadowDistance"), 80.0);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unreal), "DynamicShadowDistanceMovableLight"), 8000.0);
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("mapSize")->value, 512);
+    EXPECT_EQ(exportSettings(s, Engine::Bevy).find("DirectionalLightShadowMap.size")->value, 512);
+    s.bias.constant = 0.05f;
+    EXPECT_NEAR(number(exportSettings(s, Engine::Bevy), "DirectionalLight.shadow_depth_bias"), 0.05, 1e-7);
+    EXPECT_NEAR(number(exportSettings(s, Engine::Filament), "constantBias"), 0.05, 1e-7);
+}
+
+TEST(ExportMathTest, EngineNames) {
+    EXPECT_EQ(parseEngine("godot"), Engine::Godot);
+    EXPECT_EQ(parseEngine("threejs"), Engine::ThreeJs);
+    EXPECT_FALSE(parseEngine("cryengine"));
+    EXPECT_EQ(engineList(), "godot, unity, unreal, bevy, threejs, filament");
+}
+
+TEST(ExportMathTest, TextAndJsonListTheThreeGroups) {
+    const EngineExport e = exportSettings(handSplits(), Engine::Godot);
+    const std::string text = toText(e);
+    for (const char* g : {"\nexact:\n", "\napproximated:\n", "\nno equivalent:\n"})
+        EXPECT_NE(text.find(g), std::string::npos) << g;
+    const nlohmann::ordered_json j = toJson(e);
+    EXPECT_EQ(j["engine"], "godot");
+    EXPECT_TRUE(j["exact"].is_array() && j["approximated"].is_array() && j["noEquivalent"].is_array());
+}
+
+}  // namespace
+}  // namespace st::xport
