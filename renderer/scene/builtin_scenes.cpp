@@ -55,9 +55,49 @@ Scene makeEmpty() {
     return s;
 }
 
+// A 40 m tower, 3 m wide, 30 m behind a camera that looks down -Z (presets/scenarios/tower-*):
+// the tower is outside the view frustum, its long shadow falls into view.
+Scene makeTowerOutside() {
+    Scene s;
+    int ground = addMaterial(s, {0.8f, 0.8f, 0.8f});
+    int stone = addMaterial(s, {0.75f, 0.72f, 0.68f});
+    addGroundQuad(s, 150.0f, 0.0f, ground);
+    addBox(s, {-1.5f, 0.0f, 38.5f}, {1.5f, 40.0f, 41.5f}, stone);
+    finalizeBounds(s);
+    return s;
+}
+
+// Slats 3 m over the ground, 0.25 m wide every 1 m, 70 m long along the view (-Z): striped
+// shadows that cross every split depth, where a seam between cascades shows.
+Scene makePergola() {
+    Scene s;
+    int ground = addMaterial(s, {0.8f, 0.8f, 0.8f});
+    int wood = addMaterial(s, {0.6f, 0.42f, 0.28f});
+    addGroundQuad(s, 120.0f, 0.0f, ground);
+    for (int i = 0; i < 9; ++i) {
+        const float x = -4.0f + static_cast<float>(i);
+        addBox(s, {x, 3.0f, -70.0f}, {x + 0.25f, 3.2f, 0.0f}, wood);
+    }
+    finalizeBounds(s);
+    return s;
+}
+
+// One wall standing on the ground, 12 m along X, 3 m tall, 0.3 m thick: a face that a sun at
+// azimuth 0 or 180 grazes exactly (N.L = 0 on both long faces).
+Scene makeWall() {
+    Scene s;
+    int ground = addMaterial(s, {0.8f, 0.8f, 0.8f});
+    int brick = addMaterial(s, {0.7f, 0.4f, 0.35f});
+    addGroundQuad(s, 30.0f, 0.0f, ground);
+    addBox(s, {-6.0f, 0.0f, -0.15f}, {6.0f, 3.0f, 0.15f}, brick);
+    finalizeBounds(s);
+    return s;
+}
+
 const std::map<std::string, std::function<Scene()>>& builtins() {
     static const std::map<std::string, std::function<Scene()>> table = {
-        {"yard", makeYard}, {"box-over-plane", makeBoxOverPlane}, {"empty", makeEmpty}};
+        {"yard", makeYard},           {"box-over-plane", makeBoxOverPlane}, {"empty", makeEmpty},
+        {"tower-outside", makeTowerOutside}, {"pergola", makePergola},     {"wall", makeWall}};
     return table;
 }
 }  // namespace

@@ -66,8 +66,9 @@ struct SceneOptions {
     bool operator==(const SceneOptions&) const = default;
 };
 
-// "builtin:yard", "builtin:box-over-plane", "builtin:empty", or a .gltf/.glb path (relative paths
-// are resolved against baseDir, the preset's folder). Throws SceneError.
+// "builtin:NAME" (builtinSceneNames(): yard, box-over-plane, empty and the small scenes of
+// presets/scenarios/), or a .gltf/.glb path (relative paths are resolved against baseDir, the
+// preset's folder). Throws SceneError.
 Scene loadScene(const std::string& spec, const std::filesystem::path& baseDir, const SceneOptions& options = {});
 
 // Equal for two (spec, baseDir, options) that load the same scene: a key for caches.
