@@ -9,7 +9,8 @@ install(TARGETS shadowtune RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # presets name glTF files by relative path (../../../shared/assets/...): installed too, they
 # need those assets at <prefix>/share/shared/assets or a path edited to where the assets are.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/presets/ DESTINATION ${ST_DATA_DIR}/presets FILES_MATCHING PATTERN "*.json")
-install(FILES ${CMAKE_SOURCE_DIR}/schema/preset.schema.json DESTINATION ${ST_DATA_DIR}/schema)
+install(FILES ${CMAKE_SOURCE_DIR}/schema/preset.schema.json ${CMAKE_SOURCE_DIR}/schema/sweep.schema.json
+  DESTINATION ${ST_DATA_DIR}/schema)
 
 # The headers shadowtune::csm needs, at their paths in the source tree.
 set(ST_HEADER_DIR ${CMAKE_INSTALL_INCLUDEDIR}/shadowtune)

@@ -1,8 +1,12 @@
 // Sweep files: strict reading with the file, JSON path and reason; the grid, ids and shards.
 #include "renderer/settings/settings_json.h"
+#include "sweep/sweep_schema.h"
 #include "sweep/sweep_spec.h"
 #include "tests/sweep/sweep_test_util.h"
 
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 using namespace st;
@@ -99,4 +103,21 @@ TEST(SweepSpecTest, BadFilesNameTheFileThePathAndTheReason) {
           "axes": [{"field": "cascades.count", "values": [2]}]})", "axes: point count=2: cascades.manualSplits");
     check(R"({"version": 1, "base": "base.json"})", "axes: a sweep needs at least one axis or reference");
     EXPECT_NE(messagesOf(dir.write("broken.json", "{\"version\": 1,")).find("broken.json:1:"), std::string::npos);
+}
+
+// schema/sweep.schema.json is generated from the field table; ST_UPDATE_SCHEMA=1 rewrites it.
+TEST(SweepSchemaTest, SchemaFileIsTheGeneratedOne) {
+    const std::filesystem::path file = ST_SOURCE_DIR "/schema/sweep.schema.json";
+    const std::string want = sweepJsonSchemaText();
+    if (const char* update = std::getenv("ST_UPDATE_SCHEMA"); update && std::string(update) == "1")
+        std::ofstream(file, std::ios::binary) << want;
+    std::ifstream in(file, std::ios::binary);
+    const std::string got{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_TRUE(got == want) << file << " is stale or missing: run ST_UPDATE_SCHEMA=1 " << "ctest -R SweepSchemaTest and commit it";
+    const auto schema = nlohmann::json::parse(want);
+    EXPECT_EQ(schema["properties"]["version"]["const"], kSweepVersion);
+    bool hasCount = false;
+    for (const auto& axis : schema["properties"]["axes"]["items"]["oneOf"])
+        hasCount = hasCount || axis["properties"]["field"]["const"] == "cascades.count";
+    EXPECT_TRUE(hasCount);
 }
