@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  dpkg-dev file
+  dpkg-dev file bc
   libglm-dev nlohmann-json3-dev libcli11-dev libtinygltf-dev libstb-dev
   libopenimageio-dev openimageio-tools
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
