@@ -7,30 +7,63 @@
 #include "metrics/metrics_json.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
+#include "report/charts.h"
 
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace st::app {
 namespace fs = std::filesystem;
 namespace {
 
-void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
-    makeOutputDir(dir);
-    writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
-    writeImageAtomic(dir / "errors.png", metrics::errorImage(m.accuracy, m.samples.width, m.samples.height));
-    writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
-    if (m.flicker) writeImageAtomic(dir / "flicker.png", metrics::flickerImage(m.flickerStdDev, m.samples));
-    writeTextAtomic(dir / "metrics.json", metrics::toJson(m, name).dump(2) + "\n");
+double mean(const std::vector<double>& v) {
+    return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
 }
 
 std::string percent(double share) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3f%%", 100.0 * share);
     return text;
+}
+
+// `shares` in percent against frame index, the first at `firstFrame`.
+report::Series frameSeries(const std::string& name, const std::vector<double>& shares, int firstFrame) {
+    report::Series s{name, {}, {}};
+    for (std::size_t k = 0; k < shares.size(); ++k) {
+        s.x.push_back(double(firstFrame) + double(k));
+        s.y.push_back(100.0 * shares[k]);
+    }
+    return s;
+}
+
+// path.png: per-frame flip share (frame k against k-1) and misclassification along the path.
+report::LineChart pathChart(const metrics::FlickerReport& f, const std::string& name) {
+    report::LineChart c;
+    c.title = name + ": flicker and misclassification along the camera path (" + std::to_string(f.frames) + " frames)";
+    c.subtitle = "mean flip share " + percent(mean(f.flipShareByFrame)) + " (F), mean misclassified " +
+                 percent(mean(f.misclassifiedByFrame)) + "; observer fixed, cascade camera on the path";
+    c.xLabel = "frame";
+    c.yLabel = "share (%)";
+    c.series.push_back(frameSeries("flip share (% of sun-facing points)", f.flipShareByFrame, 1));
+    c.series.push_back(frameSeries("misclassified (% of sun-facing pixels)", f.misclassifiedByFrame, 0));
+    return c;
+}
+
+void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
+    makeOutputDir(dir);
+    writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
+    writeImageAtomic(dir / "errors.png", metrics::errorImage(m.accuracy, m.samples.width, m.samples.height));
+    writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
+    if (m.flicker) {
+        writeImageAtomic(dir / "flicker.png", metrics::flickerImage(m.flickerStdDev, m.samples));
+        report::writeLineChart(pathChart(*m.flicker, name), dir / "path.png", fs::path());
+    }
+    writeTextAtomic(dir / "metrics.json", metrics::toJson(m, name).dump(2) + "\n");
 }
 
 void printSummary(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace st::metrics {
 
@@ -13,8 +14,10 @@ double FlickerMeter::Moments::stdDev(int n) const {
     return std::sqrt(std::max(sumSquares / n - mean * mean, 0.0));
 }
 
-FlickerMeter::FlickerMeter(const MeasureSamples& first)
-    : points_(first.size(), 0), hard_(first.size()), filtered_(first.size()), flipped_(first.size(), 0) {
+FlickerMeter::FlickerMeter(const MeasureSamples& first, std::vector<std::uint8_t> truth)
+    : points_(first.size(), 0), hard_(first.size()), filtered_(first.size()), flipped_(first.size(), 0),
+      truth_(std::move(truth)) {
+    if (!truth_.empty() && truth_.size() != first.size()) throw std::invalid_argument("flicker: truth differs in size");
     for (std::size_t i = 0; i < first.size(); ++i) {
         points_[i] = first.receiver(i);
         pointCount_ += points_[i];
@@ -23,21 +26,27 @@ FlickerMeter::FlickerMeter(const MeasureSamples& first)
 
 void FlickerMeter::add(const std::vector<glm::vec4>& shadow) {
     if (shadow.size() != points_.size()) throw std::invalid_argument("flicker: frames differ in size");
-    std::size_t flips = 0;
+    std::size_t flips = 0, wrong = 0;
     for (std::size_t i = 0; i < points_.size(); ++i) {
         if (!points_[i]) continue;
         const float hard = shadow[i].x;
         hard_[i].add(hard);
         filtered_[i].add(shadow[i].y);
+        if (!truth_.empty()) wrong += (hard >= 0.5f) != (truth_[i] != 0);
         if (frames_ > 0 && hard != previous_[i]) {
             ++flips;
             flipped_[i] = 1;
         }
     }
-    if (frames_ > 0) flipShares_.push_back(pointCount_ ? double(flips) / double(pointCount_) : 0.0);
+    if (frames_ > 0) flipShares_.push_back(shareOfPoints(flips));
+    if (!truth_.empty()) misclassified_.push_back(shareOfPoints(wrong));
     previous_.resize(points_.size());
     for (std::size_t i = 0; i < points_.size(); ++i) previous_[i] = shadow[i].x;
     ++frames_;
+}
+
+double FlickerMeter::shareOfPoints(std::size_t count) const {
+    return pointCount_ ? double(count) / double(pointCount_) : 0.0;
 }
 
 std::vector<float> FlickerMeter::hardStdDev() const {
@@ -51,6 +60,8 @@ FlickerReport FlickerMeter::report() const {
     FlickerReport r;
     r.frames = frames_;
     r.samplePoints = pointCount_;
+    r.flipShareByFrame = flipShares_;
+    r.misclassifiedByFrame = misclassified_;
     if (!flipShares_.empty()) {
         r.flipRate = std::accumulate(flipShares_.begin(), flipShares_.end(), 0.0) / double(flipShares_.size());
         r.maxFlipShare = *std::max_element(flipShares_.begin(), flipShares_.end());

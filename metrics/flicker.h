@@ -23,12 +23,20 @@ struct FlickerReport {
     double meanHardStdDev = 0.0;    // per-point temporal standard deviation of the hard result, mean
     double maxHardStdDev = 0.0;
     double meanFilteredStdDev = 0.0;  // the same for the filtered factor
+    // Per frame pair k-1 -> k (k = 1 .. frames-1, so frames-1 entries): the share of points whose
+    // hard result flips; their mean is flipRate.
+    std::vector<double> flipShareByFrame;
+    // Per frame (frames entries), with a truth: the share of points whose hard result (lit at
+    // >= 0.5) disagrees with it, as the accuracy figures count misclassification. Empty without.
+    std::vector<double> misclassifiedByFrame;
 };
 
 class FlickerMeter {
 public:
     // The sample points: the receivers of `first` (pixels with a surface facing the sun).
-    explicit FlickerMeter(const MeasureSamples& first);
+    // `truth` (1 lit, 0 shadowed per pixel, or empty) is the still truth of the observer's pixels,
+    // the same for every frame; with it each frame's misclassified share is kept.
+    explicit FlickerMeter(const MeasureSamples& first, std::vector<std::uint8_t> truth = {});
 
     // Every frame's MeasureSamples::shadow in path order, the first frame's included.
     void add(const std::vector<glm::vec4>& shadow);
@@ -46,6 +54,8 @@ private:
         double stdDev(int n) const;
     };
 
+    double shareOfPoints(std::size_t count) const;
+
     std::vector<std::uint8_t> points_;
     std::size_t pointCount_ = 0;
     std::vector<float> previous_;  // hard result of the last frame
@@ -53,6 +63,8 @@ private:
     std::vector<Moments> filtered_;
     std::vector<std::uint8_t> flipped_;
     std::vector<double> flipShares_;  // per consecutive pair
+    std::vector<std::uint8_t> truth_;
+    std::vector<double> misclassified_;  // per frame, with a truth
     int frames_ = 0;
 };
 

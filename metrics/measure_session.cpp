@@ -45,10 +45,11 @@ MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& casca
     return pass.run(r, cascadeSettings, observerViewProj(observer));
 }
 
-FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev) {
+FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev,
+                             const std::vector<std::uint8_t>& truth) {
     if (s.path.frames <= 0) return {};
     const MeasureSamples first = sampleFrame(r, pass, atPathFrame(s, 0), s);  // fixes the sample points
-    FlickerMeter meter(first);
+    FlickerMeter meter(first, truth);
     meter.add(first.shadow);
     for (int frame = 1; frame < s.path.frames; ++frame) {
         const Settings cascadeSettings = atPathFrame(s, frame);
@@ -120,7 +121,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     }
     if (opt.flicker && s.path.frames > 0) {
         const auto t0 = Clock::now();
-        m.flicker = measureFlicker(*e.renderer, pass(), s, &m.flickerStdDev);
+        m.flicker = measureFlicker(*e.renderer, pass(), s, &m.flickerStdDev, m.truth);
         m.timings.flickerMs = msSince(t0);
         report(opt, "flicker over " + std::to_string(s.path.frames) + " frames " + seconds(m.timings.flickerMs));
     }

@@ -89,7 +89,9 @@ private:
 // of `observer` sees.
 MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer);
 // Flicker of s.path seen by s.camera; `stdDev` receives the per-pixel hard standard deviation.
-FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev = nullptr);
+// With `truth` (the still truth of s.camera's pixels) the report has each frame's misclassified share.
+FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev = nullptr,
+                             const std::vector<std::uint8_t>& truth = {});
 CostReport measureCost(Renderer& r, const Settings& s, int frames);
 // Truth, accuracy and texel density of the frame `s` shows into `m` (the still part of
 // MeasureSession::measure; the entry's BVH must exist).

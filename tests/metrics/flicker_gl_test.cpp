@@ -6,6 +6,9 @@
 #include "tests/metrics/metrics_gl_util.h"
 #include "tests/support/gl_fixture.h"
 
+#include <cstddef>
+#include <vector>
+
 namespace st {
 namespace {
 
@@ -52,6 +55,54 @@ TEST_F(FlickerGLTest, SphereWithoutSnappingStillFlickers) {
     Settings s = withSidewaysPath(test::presetAtTestSize("default"));
     s.cascades.stabilize = false;  // the sphere keeps the size, but the grid slides
     EXPECT_GT(flicker(s).flipRate, 0.0);
+}
+
+// The flip share of each frame pair, counted here from the frames themselves.
+std::vector<double> flipSharesOf(const std::vector<MeasureSamples>& frames) {
+    std::vector<double> shares;
+    for (std::size_t k = 1; k < frames.size(); ++k) {
+        std::size_t points = 0, flips = 0;
+        for (std::size_t i = 0; i < frames[0].size(); ++i) {
+            if (!frames[0].receiver(i)) continue;
+            ++points;
+            flips += frames[k].shadow[i].x != frames[k - 1].shadow[i].x;
+        }
+        shares.push_back(double(flips) / double(points));
+    }
+    return shares;
+}
+
+TEST_F(FlickerGLTest, PerFrameFlipSharesAreTheFramePairsAndAverageToF) {
+    Settings s = withSidewaysPath(test::presetAtTestSize("default"));
+    s.cascades.stabilize = false;
+    const metrics::FlickerReport r = flicker(s);
+    auto& e = session_.entryFor(s, ST_PRESET_DIR);
+    std::vector<MeasureSamples> frames;
+    for (int k = 0; k < s.path.frames; ++k)
+        frames.push_back(metrics::sampleFrame(*e.renderer, session_.pass(), metrics::atPathFrame(s, k), s));
+    const std::vector<double> expected = flipSharesOf(frames);
+    ASSERT_EQ(r.flipShareByFrame.size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_DOUBLE_EQ(r.flipShareByFrame[k], expected[k]) << k;
+    double sum = 0.0;
+    for (double v : expected) sum += v;
+    EXPECT_GT(r.flipRate, 0.0);
+    EXPECT_NEAR(sum / double(expected.size()), r.flipRate, 1e-12);
+}
+
+TEST_F(FlickerGLTest, FrameZeroOnTheObserverIsMisclassifiedAsTheStillFrame) {
+    Settings s = withSidewaysPath(test::presetAtTestSize("default"));  // keyframe 0 is s.camera
+    s.cascades.stabilize = false;
+    ASSERT_EQ(metrics::cameraOnPath(s, 0).position, s.camera.position);
+    ASSERT_EQ(metrics::cameraOnPath(s, 0).target, s.camera.target);
+    metrics::MeasureOptions opt;
+    opt.cost = false;
+    const metrics::PresetMeasurement m = session_.measure(s, ST_PRESET_DIR, opt);
+    ASSERT_TRUE(m.flicker);
+    ASSERT_EQ(m.flicker->misclassifiedByFrame.size(), std::size_t(s.path.frames));
+    const metrics::ErrorCounts& a = m.accuracy.all;
+    EXPECT_EQ(m.flicker->samplePoints, a.receivers);
+    EXPECT_GT(a.misclassified(), 0u);
+    EXPECT_DOUBLE_EQ(m.flicker->misclassifiedByFrame[0], a.share(a.misclassified()));
 }
 
 TEST_F(FlickerGLTest, TheCascadeCameraMovesAndTheObserverDoesNot) {

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <stdexcept>
+#include <vector>
 
 namespace st::metrics {
 namespace {
@@ -34,6 +36,41 @@ TEST(FlickerTest, OnePointTogglingEveryFrame) {
     EXPECT_DOUBLE_EQ(r.meanHardStdDev, 0.125);
     EXPECT_DOUBLE_EQ(r.meanFilteredStdDev, 0.375 / 4.0);
     EXPECT_FLOAT_EQ(meter.hardStdDev()[3], 0.5f);
+}
+
+TEST(FlickerTest, PerFrameFlipSharesAverageToTheFlipRate) {
+    MeasureSamples a = test::floorSamples(2, 2);
+    MeasureSamples b = a, c = a;
+    test::setMap(b, 1, 1, 0.0f, 0.25f);
+    test::setMap(c, 0, 0, 0.0f, 0.25f);
+    test::setMap(c, 1, 0, 0.0f, 0.25f);
+    FlickerMeter meter(a);
+    for (const MeasureSamples* f : {&a, &b, &b, &c}) meter.add(f->shadow);
+    const FlickerReport r = meter.report();
+    ASSERT_EQ(r.flipShareByFrame.size(), 3u);  // frame 0 has no predecessor
+    EXPECT_DOUBLE_EQ(r.flipShareByFrame[0], 0.25);
+    EXPECT_DOUBLE_EQ(r.flipShareByFrame[1], 0.0);
+    EXPECT_DOUBLE_EQ(r.flipShareByFrame[2], 0.75);  // (1,1) back to lit, (0,0) and (1,0) to shadow
+    EXPECT_DOUBLE_EQ(r.flipRate, (0.25 + 0.0 + 0.75) / 3.0);
+    EXPECT_TRUE(r.misclassifiedByFrame.empty());  // no truth given
+}
+
+TEST(FlickerTest, MisclassifiedByFrameCountsReceiversAgainstTheStillTruth) {
+    MeasureSamples a = test::floorSamples(2, 2);
+    a.normal[3].w = -1.0f;  // faces away: not a sample point, whatever the truth says
+    MeasureSamples b = a;
+    test::setMap(b, 0, 0, 0.0f, 0.0f);
+    std::vector<std::uint8_t> truth(4, 1);
+    truth[1] = 0;  // the map says lit there in both frames
+    truth[3] = 0;
+    FlickerMeter meter(a, truth);
+    meter.add(a.shadow);
+    meter.add(b.shadow);
+    const FlickerReport r = meter.report();
+    ASSERT_EQ(r.misclassifiedByFrame.size(), 2u);
+    EXPECT_DOUBLE_EQ(r.misclassifiedByFrame[0], 1.0 / 3.0);
+    EXPECT_DOUBLE_EQ(r.misclassifiedByFrame[1], 2.0 / 3.0);
+    EXPECT_THROW(FlickerMeter(a, std::vector<std::uint8_t>(3, 1)), std::invalid_argument);
 }
 
 TEST(FlickerTest, OnlyReceiversOfTheFirstFrameAreSamplePoints) {

@@ -22,7 +22,7 @@ run measure "$work/with-path.json" --out "$work/out" --size 96x64 --frames 1
 check "good preset exits 0" rc 0
 check "one summary line names the preset and timings" out_has "with-path: 96x64 misclassified"
 check "summary has the ground truth time" out_has "ground truth"
-for f in metrics.json truth.png errors.png texel-density.png flicker.png; do
+for f in metrics.json truth.png errors.png texel-density.png flicker.png path.png; do
   check "writes $f" test -s "$work/out/with-path/$f"
 done
 m="$work/out/with-path/metrics.json"
@@ -39,6 +39,13 @@ check "mixed run exits 1" rc 1
 check "bad preset names file and field" err_has "bad-count.json: cascades.count: must be in 1..8, got 12"
 check "good preset still measured" test -s "$work/mixed/box-over-plane/metrics.json"
 check "no flicker image without a path" test ! -e "$work/mixed/box-over-plane/flicker.png"
+check "no path chart without a path" test ! -e "$work/mixed/box-over-plane/path.png"
+
+# The shipped default preset has a path: its chart of flip share and misclassification per frame.
+run measure "$presets/default.json" --out "$work/default" --size 96x64 --frames 1
+check "default preset exits 0" rc 0
+check "default writes path.png" test -s "$work/default/default/path.png"
+check "path.png is a 1200x900 chart" bash -c "oiiotool --info '$work/default/default/path.png' | grep -q '1200 x  900'"
 
 run measure "$presets/box-over-plane.json" --out "$work/x" --size 10x10000
 check "bad size rejected" bash -c "[[ \$(cat '$work/rc') == 2 ]] && grep -qF -- '--size' '$work/stderr'"
