@@ -22,11 +22,6 @@ std::string number(double v) {
     return text;
 }
 
-// "sphere" for "\"sphere\"": axis values are kept as JSON text, shown without its quotes.
-std::string plain(const std::string& json) {
-    return json.size() >= 2 && json.front() == '"' && json.back() == '"' ? json.substr(1, json.size() - 2) : json;
-}
-
 std::string short3(double v) {  // table cells: three significant digits
     if (!std::isfinite(v)) return "-";
     char text[32];
@@ -49,7 +44,7 @@ void writeCsv(const fs::path& file, const Manifest& m, const std::vector<PointRe
     text += "\n";
     for (const PointResult& r : results) {
         text += r.id + "," + (r.reference ? "reference" : "grid") + "," + csvField(r.label);
-        for (const std::string& v : r.axisValues) text += "," + csvField(plain(v));
+        for (const std::string& v : r.axisValues) text += "," + csvField(unquoted(v));
         for (const auto& [k, v] : r.figures) text += "," + number(v);
         text += "\n";
     }
@@ -134,14 +129,14 @@ void writeAxisCharts(const fs::path& dir, const Manifest& m, const std::vector<P
         const auto line = alongAxis(m, results, a);
         std::string held;
         for (std::size_t b = 0; b < m.axisFields.size(); ++b)
-            if (b != a) held += (held.empty() ? "others at " : ", ") + m.axisFields[b] + "=" + plain(m.baseValues[b]);
+            if (b != a) held += (held.empty() ? "others at " : ", ") + m.axisFields[b] + "=" + unquoted(m.baseValues[b]);
         for (const auto& [key, label] : figures) {
             report::LineChart c;
             c.title = m.sweep + ": " + key + " against " + m.axisFields[a];
             c.subtitle = held.empty() ? machineLine(m) : held + "; " + machineLine(m);
             c.xLabel = m.axisFields[a];
             c.yLabel = label;
-            for (const std::string& v : m.axisValues[a]) c.xTickLabels.push_back(plain(v));
+            for (const std::string& v : m.axisValues[a]) c.xTickLabels.push_back(unquoted(v));
             report::Series s{key, {}, {}};
             for (std::size_t i = 0; i < line.size(); ++i)
                 if (line[i] && std::isfinite(line[i]->figure(key))) s.x.push_back(double(i)), s.y.push_back(line[i]->figure(key));

@@ -17,11 +17,7 @@ std::string fingerprintOf(const SweepSpec& spec, const std::vector<Point>& point
     std::string text;
     for (const Axis& a : spec.axes) text += std::string(a.field->path) + ";";
     for (const Point& p : points) text += p.id + ",";
-    std::uint64_t h = 1469598103934665603ull;
-    for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-    char out[17];
-    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
-    return out;
+    return fnv1aHex(text);
 }
 
 // JSON has no NaN: a figure that does not apply is written as null.

@@ -8,8 +8,6 @@ namespace st::sweep {
 namespace {
 using OJson = nlohmann::ordered_json;
 
-bool sweepable(const FieldInfo& f) { return f.change != ChangeClass::Scene && f.change != ChangeClass::None; }
-
 // One branch per field: {"field": const, "values": [its schema...]} or a range for numbers.
 OJson axisSchema(const FieldInfo& f) {
     OJson props{{"field", {{"const", std::string(f.path)}}},
@@ -28,7 +26,7 @@ std::string sweepJsonSchemaText() {
     OJson axes = OJson::array(), setProps = OJson::object();
     for (const FieldInfo& f : fieldTable()) {
         setProps[std::string(f.path)] = fieldValueSchema(f);
-        if (sweepable(f)) axes.push_back(axisSchema(f));
+        if (isSweepable(f)) axes.push_back(axisSchema(f));
     }
     OJson root{
         {"$schema", "https://json-schema.org/draft/2020-12/schema"},

@@ -55,9 +55,9 @@ const FieldInfo* sweepableField(const Json& name, const std::string& path, Probl
     }
     const FieldInfo* field = findField(name.get<std::string>());
     if (!field) p.add(path, "unknown field \"" + name.get<std::string>() + "\" (see schema/preset.schema.json)");
-    else if (field->change == ChangeClass::Scene || field->change == ChangeClass::None)
+    else if (!isSweepable(*field))
         p.add(path, "\"" + std::string(field->path) + "\" cannot be swept: a sweep keeps one scene and scores frames");
-    return field && field->change != ChangeClass::Scene && field->change != ChangeClass::None ? field : nullptr;
+    return field && isSweepable(*field) ? field : nullptr;
 }
 
 void readSet(const Json& root, Settings& base, Problems& p) {
@@ -191,11 +191,6 @@ void readReferences(const Json& root, SweepSpec& spec, Problems& p) {
     }
 }
 
-// "sphere" for "\"sphere\"": labels read better without JSON's quotes.
-std::string plainText(const std::string& json) {
-    return json.size() >= 2 && json.front() == '"' && json.back() == '"' ? json.substr(1, json.size() - 2) : json;
-}
-
 // "count" for cascades.count, unless another axis ends the same way: labels stay short on charts.
 std::vector<std::string> shortNames(const std::vector<Axis>& axes) {
     std::vector<std::string> names;
@@ -255,12 +250,22 @@ SweepSpec loadSweep(const fs::path& file) {
     return spec;
 }
 
-std::string settingsId(const Settings& s) {
+std::string fnv1aHex(const std::string& text) {
     std::uint64_t h = 1469598103934665603ull;
-    for (const unsigned char c : toJson(s).dump()) h = (h ^ c) * 1099511628211ull;
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
+    for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    char out[17];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+    return out;
+}
+
+std::string settingsId(const Settings& s) { return fnv1aHex(toJson(s).dump()); }
+
+bool isSweepable(const FieldInfo& field) {
+    return field.change != ChangeClass::Scene && field.change != ChangeClass::None;
+}
+
+std::string unquoted(const std::string& json) {
+    return json.size() >= 2 && json.front() == '"' && json.back() == '"' ? json.substr(1, json.size() - 2) : json;
 }
 
 std::vector<Point> expandPoints(const SweepSpec& spec) {
@@ -274,7 +279,7 @@ std::vector<Point> expandPoints(const SweepSpec& spec) {
             const Axis& axis = spec.axes[a];
             axis.field->set(point.settings, axis.values[at[a]]);
             point.axisValues.push_back(axis.valueText[at[a]]);
-            point.label += (a ? " " : "") + names[a] + "=" + plainText(axis.valueText[at[a]]);
+            point.label += (a ? " " : "") + names[a] + "=" + unquoted(axis.valueText[at[a]]);
         }
         point.id = settingsId(point.settings);
         points.push_back(std::move(point));

@@ -64,5 +64,12 @@ std::vector<Point> shardOf(const std::vector<Point>& points, int index, int coun
 
 // FNV-1a 64 of the settings' JSON, as 16 hex digits.
 std::string settingsId(const Settings& s);
+std::string fnv1aHex(const std::string& text);  // the same hash of any text
+
+// A field a sweep may vary: one the renderer reads and that keeps the scene.
+bool isSweepable(const FieldInfo& field);
+
+// "sphere" for the JSON text "\"sphere\"": axis values are kept as JSON, shown without quotes.
+std::string unquoted(const std::string& json);
 
 }  // namespace st::sweep

@@ -30,4 +30,13 @@ void applyPassState(const PassState& s) {
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
+PassState opaqueScenePass(GLuint framebuffer, int width, int height) {
+    PassState state;
+    state.framebuffer = framebuffer;
+    state.viewport = {0, 0, width, height};
+    state.depthTest = state.depthWrite = true;
+    state.cullFace = GL_BACK;
+    return state;
+}
+
 }  // namespace st::gpu

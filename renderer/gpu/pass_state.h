@@ -26,4 +26,9 @@ struct PassState {
 
 void applyPassState(const PassState& state);
 
+// Drawing the scene into `framebuffer` (width x height): depth-tested, back faces culled (the
+// draws turn culling off for double-sided materials). The main and the measurement pass share
+// it, so the metrics score the pixels the image shows.
+PassState opaqueScenePass(GLuint framebuffer, int width, int height);
+
 }  // namespace st::gpu

@@ -30,14 +30,9 @@ void MeasurePass::ensureTargets(int width, int height) {
     height_ = height;
 }
 
-// The main pass's state (depth test, back-face culling per material) so coverage is the same.
+// The main pass's state, so coverage is the same.
 void MeasurePass::draw(const Renderer& r, const glm::mat4& observerViewProj) {
-    gpu::PassState state;
-    state.framebuffer = fbo_.id();
-    state.viewport = {0, 0, width_, height_};
-    state.depthTest = state.depthWrite = true;
-    state.cullFace = GL_BACK;
-    gpu::applyPassState(state);
+    gpu::applyPassState(gpu::opaqueScenePass(fbo_.id(), width_, height_));
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
     const float far = 1.0f;

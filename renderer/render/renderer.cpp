@@ -101,19 +101,10 @@ void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const Offsc
     lines_.draw(cascadeWireframes(plan_), viewProj, target.framebuffer(), target.width(), target.height());
 }
 
-gpu::PassState Renderer::mainPassState(const OffscreenTarget& target) {
-    gpu::PassState state;
-    state.framebuffer = target.framebuffer();
-    state.viewport = {0, 0, target.width(), target.height()};
-    state.depthTest = state.depthWrite = true;
-    state.cullFace = GL_BACK;  // per material: double-sided ones draw both sides
-    return state;
-}
-
 void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target) {
     gpu::DebugGroup group("main pass");
     timers_.begin(s.cascades.count);
-    gpu::applyPassState(mainPassState(target));
+    gpu::applyPassState(gpu::opaqueScenePass(target.framebuffer(), target.width(), target.height()));
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glUseProgram(mainProgram_.id());

@@ -57,8 +57,6 @@ private:
     // main camera's cascades.
     void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target);
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
-    static gpu::PassState mainPassState(const OffscreenTarget& target);
-
     SceneGpu scene_;
     gpu::Program depthProgram_;
     gpu::Program mainProgram_;
