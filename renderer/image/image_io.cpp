@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
 
 #include <fstream>
 #include <stdexcept>
@@ -41,16 +42,18 @@ void writeImageAtomic(const fs::path& file, const Rgba8Image& img) {
     commit(tmp, file);
 }
 
+// Read through ImageInput, not ImageBuf: ImageBuf goes through OIIO's process-wide ImageCache,
+// which keeps the first spec it saw for a path, so re-reading a file rewritten in the same
+// process (a golden updated, a sweep's chart redrawn) read the new pixels with the old size.
 Rgba8Image readImage(const fs::path& file) {
-    OIIO::ImageBuf buf(file.string());
-    if (!buf.read(0, 0, true, OIIO::TypeDesc::UINT8))
-        throw std::runtime_error(file.string() + ": cannot read image: " + buf.geterror());
-    const OIIO::ImageSpec& spec = buf.spec();
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) throw std::runtime_error(file.string() + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec spec = in->spec();
     Rgba8Image img{spec.width, spec.height, {}};
     img.pixels.assign(std::size_t(spec.width) * spec.height * 4, 255);
-    OIIO::ROI roi(0, spec.width, 0, spec.height, 0, 1, 0, std::min(spec.nchannels, 4));
-    if (!buf.get_pixels(roi, OIIO::TypeDesc::UINT8, img.pixels.data(), 4))
-        throw std::runtime_error(file.string() + ": cannot read pixels: " + buf.geterror());
+    const int channels = std::min(spec.nchannels, 4);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, img.pixels.data(), 4))
+        throw std::runtime_error(file.string() + ": cannot read pixels: " + in->geterror());
     return img;
 }
 
