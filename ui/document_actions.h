@@ -4,6 +4,7 @@
 #include "ui/ui_state.h"
 
 #include <filesystem>
+#include <string>
 
 namespace st::ui {
 
@@ -14,6 +15,13 @@ void loadNow(UiFrame& f, const std::filesystem::path& file);
 // Saves to the current file; without one, to the "Save as" path.
 void saveCurrent(UiFrame& f);
 void saveAs(UiFrame& f, const std::filesystem::path& file);
+
+// The folder relative file references of the document are taken from: the file's, or presetDir
+// while untitled.
+std::filesystem::path documentFolder(const UiState& state);
+
+// Why `scene` would not load (UiInputs::checkScene), or "" when it loads or nobody can tell.
+std::string sceneProblem(const UiFrame& f, const std::string& scene, bool ground, const std::filesystem::path& baseDir);
 
 // Quits at once when nothing is unsaved, otherwise after the confirmation.
 void requestQuitFrom(UiState& state, bool dirty);

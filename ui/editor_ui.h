@@ -23,6 +23,7 @@
 #include <imgui.h>
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct UiInputs {
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
     AccuracyView accuracy;                   // the background ground truth's state and figures
+    // Loads a scene the panels are about to put into the settings (relative paths from baseDir):
+    // "" when it loads, else why not; the UI then leaves the settings as they are. Unset: every
+    // scene is taken.
+    std::function<std::string(const std::string& scene, bool ground, const std::filesystem::path& baseDir)> checkScene;
 };
 
 // What the app should do after this frame. Default: nothing.

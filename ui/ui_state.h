@@ -44,6 +44,8 @@ struct UiState {
     std::string saveAsText;                // the "Save as" path field
     std::string gltfText;                  // the scene's glTF path field
     std::string gltfTextFor;               // the scene value gltfText was last synced from
+    std::string sceneError;                // why the scene last chosen did not load (shown in red)
+    std::string sceneErrorFor;             // ... the value refused; the message goes when the field changes
 
     PendingDiscard pending;
     bool openConfirm = false;              // open the confirmation modal this frame
