@@ -1,5 +1,6 @@
 #include "app/editor_session.h"
 
+#include "app/preset_list.h"
 #include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/preset_paths.h"
@@ -32,12 +33,7 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : w
 }
 
 void EditorSession::scanPresets() {
-    presetFiles_.clear();
-    std::error_code ec;
-    for (const fs::path& dir : {opt_.presetDir, opt_.presetDir / "scenes"})
-        for (const auto& e : fs::directory_iterator(dir, ec))
-            if (e.path().extension() == ".json") presetFiles_.push_back(e.path());
-    std::sort(presetFiles_.begin(), presetFiles_.end());
+    presetFiles_ = listPresetFiles(opt_.presetDir);
 }
 
 EditorSession::~EditorSession() = default;

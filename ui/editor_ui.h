@@ -78,6 +78,7 @@ struct ShortcutKeys {
     int save = 83;    // Ctrl+S
     int frame = 70;   // F: frame the scene
     int help = 290;   // F1: help window
+    int open = 79;    // Ctrl+O: File > Open
 };
 
 // Draws the Accuracy panel's error overlay (an RGBA texture, top row first, straight alpha) over

@@ -8,7 +8,15 @@ namespace st::ui {
 namespace {
 
 void fileMenu(UiFrame& f) {
-    if (!ImGui::BeginMenu("File")) return;
+    const bool open = ImGui::BeginMenu("File");
+    recordItem(f.state.rects, "menu.file");
+    if (!open) return;
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) showOpenDialog(f.state);
+    recordItem(f.state.rects, "menu.open");
+    const bool dirty = isDirty(f.state.doc, f.s);
+    if (ImGui::MenuItem("Revert", nullptr, false, dirty && !f.state.doc.file.empty())) requestLoad(f, f.state.doc.file);
+    recordItem(f.state.rects, "menu.revert");
+    ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(f);
     if (ImGui::MenuItem("Quit")) requestQuitFrom(f.state, isDirty(f.state.doc, f.s));
     ImGui::EndMenu();
@@ -36,11 +44,13 @@ void viewMenu(UiFrame& f) {
 }  // namespace
 
 void drawMenuBar(UiFrame& f) {
-    if (!ImGui::BeginMainMenuBar()) return;
-    fileMenu(f);
-    editMenu(f);
-    viewMenu(f);
-    ImGui::EndMainMenuBar();
+    if (ImGui::BeginMainMenuBar()) {
+        fileMenu(f);
+        editMenu(f);
+        viewMenu(f);
+        ImGui::EndMainMenuBar();
+    }
+    drawOpenDialog(f);
 }
 
 }  // namespace st::ui

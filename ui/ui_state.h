@@ -42,6 +42,12 @@ struct UiState {
     int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
 
     std::string saveAsText;                // the "Save as" path field
+    bool showOpen = false;                 // File > Open's window
+    bool focusOpenPath = false;            // ... put the cursor in its path field this frame
+    std::string openText;                  // its path field
+    std::string openCandidatesFor;         // the text openCandidates were listed for
+    std::vector<std::string> openCandidates;
+    bool openCandidatesKnown = false;
     std::string gltfText;                  // the scene's glTF path field
     std::string gltfTextFor;               // the scene value gltfText was last synced from
     std::string sceneError;                // why the scene last chosen did not load (shown in red)

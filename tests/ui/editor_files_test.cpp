@@ -96,3 +96,53 @@ TEST_F(EditorFilesTest, APresetWhoseSceneFailsToLoadIsRefusedWhole) {
     ASSERT_EQ(d.ui().errors().size(), 1u);
     EXPECT_NE(d.ui().errors().front().find("scene file not found"), std::string::npos) << d.ui().errors().front();
 }
+
+// Issue 13 #9: File > Open with completion, Revert.
+TEST_F(EditorFilesTest, FileOpenCompletesJsonPathsAndLoadsTheChosenPreset) {
+    Settings other;
+    other.cascades.lambda = 0.9f;
+    savePresetAtomic(other, scratch.path / "presets" / "scenes" / "boat.json");
+    scratch.write("presets/scenes/notes.txt", "not offered");
+    d.click("menu.file");
+    d.click("menu.open");
+    ASSERT_TRUE(d.drawn("open.path"));
+    const std::string folder = (scratch.path / "presets").string() + "/";
+    d.frames(2);  // the new window takes the keyboard once it is shown
+    EXPECT_TRUE(ImGui::GetIO().WantTextInput) << "the cursor is in the path field";
+    d.typeText((folder + "sc").c_str());
+    d.frame();
+    EXPECT_TRUE(d.drawn("open:" + folder + "scenes/"));
+    d.pressKey(kKeyTab);  // completes the folder, and does not swap the views while typing
+    EXPECT_FALSE(d.last.swapSideView);
+    d.frame();
+    EXPECT_TRUE(d.drawn("open:" + folder + "scenes/boat.json"));
+    EXPECT_FALSE(d.drawn("open:" + folder + "scenes/notes.txt"));
+    d.typeText("b");
+    d.pressKey(kKeyTab);  // unique: completed to the file
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.ui().presetFile(), scratch.path / "presets" / "scenes" / "boat.json");
+    EXPECT_EQ(d.s, other);
+    d.frame();
+    EXPECT_FALSE(d.drawn("open.path")) << "the window closes once the preset is loaded";
+}
+
+TEST_F(EditorFilesTest, RevertReloadsTheFileAfterAskingAndIsOffWhenClean) {
+    savePresetAtomic(d.s, scratch.path / "presets" / "a.json");
+    ASSERT_TRUE(d.ui().openPreset(scratch.path / "presets" / "a.json", d.s));
+    const Settings saved = d.s;
+    d.s.light.elevation = 5.0f;
+    d.frame();
+    ASSERT_TRUE(d.ui().dirty());
+    d.click("menu.file");
+    d.click("menu.revert");
+    d.click("confirm.discard");
+    EXPECT_EQ(d.s, saved);
+    EXPECT_FALSE(d.ui().dirty());
+}
+
+TEST_F(EditorFilesTest, ThePresetListShowsSubFolderFiles) {
+    d.in.presetFiles = {scratch.path / "presets" / "a.json", scratch.path / "presets" / "scenes" / "fox.json"};
+    d.frame();
+    EXPECT_TRUE(d.drawn("preset:a.json"));
+    EXPECT_TRUE(d.drawn("preset:fox.json"));
+}
