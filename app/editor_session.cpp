@@ -91,17 +91,28 @@ void EditorSession::handleInput() {
         in.forward = key(GLFW_KEY_W), in.back = key(GLFW_KEY_S), in.left = key(GLFW_KEY_A);
         in.right = key(GLFW_KEY_D), in.down = key(GLFW_KEY_Q), in.up = key(GLFW_KEY_E);
     }
+    const CameraSettings before = settings_.camera;
     if (swapped_ && !io.WantCaptureMouse) {  // full-window side camera: left mouse orbits, wheel zooms
         if (io.MouseDown[0]) orbit_.yawDeg -= io.MouseDelta.x * 0.3f, orbit_.pitchDeg += io.MouseDelta.y * 0.3f;
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
-        return;
+    } else {
+        updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
     }
-    updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
+    // A fly or pan gesture is one undo step (issue 13 #4).
+    if (auto start = cameraGesture_.update(before, settings_.camera, in.look || in.pan)) {
+        Settings atStart = settings_;
+        atStart.camera = *start;
+        ui_->recordEdit(atStart, settings_);
+    }
 }
 
 void EditorSession::applyRequests(const ui::UiRequests& r) {
     if (r.quit) quit_ = true;
-    if (r.frameScene) frameBounds(settings_.camera, scene_->wsBounds);
+    if (r.frameScene) {  // moves the camera only, as one undo step; near/far are tuning settings
+        const Settings before = settings_;
+        status_ = frameKeepingClipPlanes(settings_.camera, scene_->wsBounds);
+        ui_->recordEdit(before, settings_);
+    }
     if (r.swapSideView) swapped_ = !swapped_;
     if (r.presetsChanged) scanPresets();
     presetPath_ = ui_->presetFile();  // a load or a save may have moved the document

@@ -5,6 +5,7 @@
 #include "app/editor_app.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
+#include "app/view_actions.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/shadow_map_view.h"
@@ -67,6 +68,7 @@ private:
     int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
     FrameStats stats_;
     FlyState fly_;
+    CameraGesture cameraGesture_;
     OrbitCamera orbit_;
     bool swapped_ = false;   // side view full window, main camera in the corner
     bool quit_ = false;

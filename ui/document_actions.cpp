@@ -8,13 +8,15 @@ namespace st::ui {
 namespace {
 
 // An edit gesture still open (e.g. Ctrl+Z pressed before the frame that would close it).
+// A change of the debug view alone is no undo step unless the view is saved with the preset.
 void closeGesture(UiFrame& f) {
     if (!f.state.gestureStart) return;
-    f.state.undo.push(*f.state.gestureStart, f.s);
+    recordStep(f.state, *f.state.gestureStart, f.s);
     f.state.gestureStart.reset();
 }
 
 void replaceSettings(UiFrame& f, Settings restored) {
+    if (!f.state.doc.saveViewWithPreset) restored.output.view = f.s.output.view;
     f.s = std::move(restored);
     f.replaced = true;
 }
@@ -99,6 +101,11 @@ void trackEditGesture(UiFrame& f, const Settings& beforeWidgets) {
     }
     if (f.edited && !f.state.gestureStart) f.state.gestureStart = beforeWidgets;
     if (f.state.gestureStart && !ImGui::IsAnyItemActive()) closeGesture(f);
+}
+
+bool recordStep(UiState& state, Settings before, const Settings& after) {
+    if (!state.doc.saveViewWithPreset) before.output.view = after.output.view;
+    return state.undo.push(before, after);
 }
 
 void undoEdit(UiFrame& f) {

@@ -32,6 +32,10 @@ void runPendingDiscard(UiFrame& f);
 // Records the widget edit in progress as one undo step once no widget is active any more.
 void trackEditGesture(UiFrame& f, const Settings& beforeWidgets);
 
+// One undo step from `before` to `after` (e.g. a camera gesture the app made); false when they
+// differ in nothing the document holds.
+bool recordStep(UiState& state, Settings before, const Settings& after);
+
 void undoEdit(UiFrame& f);
 void redoEdit(UiFrame& f);
 

@@ -86,6 +86,14 @@ bool EditorUi::openPreset(const std::filesystem::path& file, Settings& s) {
     return true;
 }
 
+void EditorUi::recordEdit(const Settings& before, const Settings& after) {
+    if (state_->gestureStart) {  // a widget gesture still open: close it at `before`
+        state_->undo.push(*state_->gestureStart, before);
+        state_->gestureStart.reset();
+    }
+    recordStep(*state_, before, after);
+}
+
 void EditorUi::requestQuit() { requestQuitFrom(*state_, state_->dirty); }
 
 bool EditorUi::dirty() const { return state_->dirty; }

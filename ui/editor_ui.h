@@ -107,6 +107,10 @@ public:
     // are listed in the Presets panel and the result is false. Clears the undo history.
     bool openPreset(const std::filesystem::path& file, Settings& s);
 
+    // Records a change the app made to the settings outside draw() (a camera fly or orbit gesture,
+    // frame scene) as one undo step. `after` must be what the next draw() is given.
+    void recordEdit(const Settings& before, const Settings& after);
+
     // The window's close button was pressed: a later draw() returns quit, after a confirmation
     // if there are unsaved changes.
     void requestQuit();

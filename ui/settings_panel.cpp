@@ -66,16 +66,6 @@ void drawField(UiFrame& f, const FieldInfo& field) {
     ImGui::PopID();
 }
 
-void drawSunAnimation(UiFrame& f) {
-    ImGui::Checkbox("Animate sun", &f.state.animateSun);
-    recordItem(f.state.rects, "sun.animate");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-    ImGui::DragFloat("##sunSpeed", &f.state.sunDegPerSecond, 0.5f, -180.0f, 180.0f, "%.1f deg/s",
-                     ImGuiSliderFlags_AlwaysClamp);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Azimuth turn rate while the sun is animated (not saved).");
-}
-
 // What a group shows after its fields: the sun toggle, the cascade figures.
 void drawGroupExtras(UiFrame& f, const std::string& key) {
     if (key == "light") drawSunAnimation(f);

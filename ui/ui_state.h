@@ -32,6 +32,7 @@ struct UiState {
 
     bool animateSun = false;               // UI state, not Settings: advances light.azimuth
     float sunDegPerSecond = 10.0f;
+    float sunPreviewFrom = 0.0f;           // light.azimuth when the animation started: restored at stop
     TimingHistory timing;
 
     bool showShadowMaps = true;
