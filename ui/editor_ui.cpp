@@ -65,7 +65,10 @@ UiRequests EditorUi::draw(Settings& s, const UiInputs& in) {
     animateSun(f);
     handleShortcuts(f);
     const Settings beforeWidgets = s;
+    // Tab swaps the views; ImGui would also move the keyboard into the next widget (issue 13 #3).
+    ImGui::PushAllowKeyboardFocus(false);
     drawPanels(f);
+    ImGui::PopAllowKeyboardFocus();
     trackEditGesture(f, beforeWidgets);
     finishFrame(f, atStart);
     return req;
