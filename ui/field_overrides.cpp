@@ -83,7 +83,7 @@ bool drawGltfPath(const FieldInfo& field, UiFrame& f) {
 bool drawScene(const FieldInfo& field, UiFrame& f) {
     const FieldValue value = field.get(f.s);
     const auto* scene = std::get_if<std::string>(&value);
-    if (!scene) return drawFieldWidget(field, f.s, f.state.rects);
+    if (!scene) return drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     syncGltfText(f.state, *scene);
     const bool picked = drawBuiltinCombo(field, f, *scene);
     const bool typed = drawGltfPath(field, f);
@@ -113,9 +113,9 @@ bool drawManualSplits(const FieldInfo& field, UiFrame& f) {
     if (f.s.cascades.scheme != SplitScheme::Manual) return false;
     const FieldValue value = field.get(f.s);
     const auto* stored = std::get_if<std::vector<float>>(&value);
-    if (!stored) return drawFieldWidget(field, f.s, f.state.rects);
+    if (!stored) return drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     std::vector<float> splits = fitManualSplits(f.s, rendererSplits(f));
-    editFloatElements(field, splits, f.state.rects);
+    editFloatElements(field, splits, f.state.rects, f.state.fieldEdits);
     return storeField(field, f.s, splits);
 }
 

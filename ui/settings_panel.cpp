@@ -60,7 +60,7 @@ void drawFieldIssues(const UiFrame& f, const FieldInfo& field) {
 void drawField(UiFrame& f, const FieldInfo& field) {
     ImGui::PushID(field.path.data(), field.path.data() + field.path.size());
     const FieldOverride custom = overrideFor(field.path);
-    const bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects);
+    const bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     f.edited = f.edited || changed;
     drawFieldIssues(f, field);
     ImGui::PopID();

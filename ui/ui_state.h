@@ -5,6 +5,7 @@
 #include "renderer/settings/validation.h"
 #include "ui/document.h"
 #include "ui/editor_ui.h"
+#include "ui/field_widgets.h"
 #include "ui/history.h"
 #include "ui/undo_stack.h"
 
@@ -59,6 +60,7 @@ struct UiState {
     bool quitConfirmed = false;            // draw() returns quit
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
+    FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused
     ItemRects rects;
 };
 
