@@ -13,9 +13,11 @@ class KeyQueue {
 public:
     void push(int key, bool down);  // from the key callback, in the order they came
 
-    // Applies the queued events to `keysDown` (indexed by key code) in order, up to the first
-    // one for a key that already changed this frame; that one and the rest wait for the next
-    // frame. Codes outside `keysDown` are dropped. Returns true if events are still waiting.
+    // Applies the queued events to `keysDown` (indexed by key code) in order, one change per key
+    // per frame: a key's further events wait for the next frame, other keys' do not (so typing
+    // "ss" at 5 fps delays the second s, not the keys after it, which would then arrive after
+    // the mouse and text they came with). Codes outside `keysDown` are dropped. Returns true if
+    // events are still waiting.
     bool feed(std::span<bool> keysDown);
 
     bool empty() const { return events_.empty(); }

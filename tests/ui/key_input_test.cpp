@@ -41,6 +41,24 @@ TEST(KeyQueueTest, DifferentKeysGoTogetherAndRepeatsAndStrayCodesAreDropped) {
     EXPECT_FALSE(keys[kKeyS]);
 }
 
+TEST(KeyQueueTest, AKeyThatWaitsDoesNotHoldBackTheOthers) {
+    app::KeyQueue q;
+    bool keys[512] = {};
+    for (int key : {83, 83, 70}) {  // "s", "s", "f" typed within one frame
+        q.push(key, true);
+        q.push(key, false);
+    }
+    q.push(kKeyEnter, true);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[83] && keys[70] && keys[kKeyEnter]);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_FALSE(keys[83] || keys[70]);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[83]);  // the second s
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_FALSE(keys[83]);
+}
+
 namespace {
 
 // Frames at 6 fps; `tap` puts a press and its release into the queue between two frames, as
