@@ -95,7 +95,9 @@ void EditorSession::handleInput() {
     if (swapped_ && !io.WantCaptureMouse) {  // full-window side camera: left mouse orbits, wheel zooms
         if (io.MouseDown[0]) orbit_.yawDeg -= io.MouseDelta.x * 0.3f, orbit_.pitchDeg += io.MouseDelta.y * 0.3f;
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
-    } else {
+    } else if (in.look || in.pan || in.wheel != 0.0f) {
+        // Only then: re-deriving the target from the position each frame drifts by rounding,
+        // and every drift would be an undo step.
         updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
     }
     // A fly or pan gesture is one undo step (issue 13 #4).

@@ -28,6 +28,19 @@ TEST(ViewActionsTest, FrameSceneMovesTheCameraAndKeepsNearAndFar) {
     EXPECT_LT(glm::length(small.position - small.target), small.farPlane);
 }
 
+// The default preset's camera looks 13 deg down; framed, it looked 60 deg up from under the
+// ground, because the direction was taken after the target had moved to the centre.
+TEST(ViewActionsTest, FrameSceneKeepsTheViewingDirection) {
+    CameraSettings cam;
+    cam.position = {0, 6, 14};
+    cam.target = {0, 0, -12};
+    const glm::vec3 before = glm::normalize(cam.target - cam.position);
+    frameKeepingClipPlanes(cam, csm::Aabb{{-50, 0, -50}, {50, 60, 50}});
+    const glm::vec3 after = glm::normalize(cam.target - cam.position);
+    EXPECT_NEAR(glm::dot(before, after), 1.0f, 1e-5f);
+    EXPECT_GT(cam.position.y, 30.0f) << "above the centre, looking down as before";
+}
+
 TEST(ViewActionsTest, ACameraGestureEndsWhenTheButtonIsReleased) {
     CameraGesture g;
     CameraSettings a, b = a, c = a;
