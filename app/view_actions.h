@@ -12,7 +12,8 @@ namespace st::app {
 
 // frameBounds' position and target, with near and far left as the preset has them: they are
 // tuning settings (the cascades follow them). When the framed scene reaches past the far plane
-// the result says so ("the scene reaches 5938 m, past the far plane (1500 m) ..."); else "".
+// the camera comes in to half the far plane from the centre (same direction) and the result
+// says so ("the scene reaches 5938 m, past the far plane (1500 m) ..."); else "".
 std::string frameKeepingClipPlanes(CameraSettings& cam, const csm::Aabb& wsBounds);
 
 // Turns per-frame camera changes into gestures: from the first frame that moves the camera to
