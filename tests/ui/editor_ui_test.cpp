@@ -135,6 +135,28 @@ TEST_F(EditorUiTest, TypedNumbersApplyOnEnterOrFocusLossNotPerKeystroke) {
     EXPECT_EQ(d.s.light.elevation, 12.0f);
 }
 
+// Issue 13 #7: "filter size -5 becomes 3".
+TEST_F(EditorUiTest, ANegativeFilterSizeTypedIntoItsBoxIsRefused) {
+    d.s.filter.kind = FilterKind::PcfNxN;
+    d.s.filter.size = 5;
+    d.frame();
+    d.scroll(d.rect("light.elevation").center(), -10.0f);  // the Filter group is below the fold
+    ASSERT_LT(d.rect("filter.size").max.y, 700.0f);
+    d.click("filter.size");
+    d.pressKey(65, true);  // Ctrl+A
+    d.typeText("-5");
+    EXPECT_EQ(d.s.filter.size, 5) << "nothing applies while typing";
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.filter.size, 5);
+    EXPECT_TRUE(d.drawn("filter.size#refused"));
+    d.click("filter.size");
+    d.pressKey(65, true);
+    d.typeText("7");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.filter.size, 7);
+    EXPECT_FALSE(d.drawn("filter.size#refused"));
+}
+
 TEST_F(EditorUiTest, FieldsTheModeDoesNotUseAreGreyed) {
     d.s.cascades.scheme = SplitScheme::Uniform;
     d.s.filter.kind = FilterKind::Pcf2x2;
