@@ -1,7 +1,9 @@
 #include "app/editor_session.h"
 
+#include "app/preset_list.h"
 #include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 
 #include <epoxy/gl.h>
@@ -31,24 +33,23 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : w
 }
 
 void EditorSession::scanPresets() {
-    presetFiles_.clear();
-    std::error_code ec;
-    for (const fs::path& dir : {opt_.presetDir, opt_.presetDir / "scenes"})
-        for (const auto& e : fs::directory_iterator(dir, ec))
-            if (e.path().extension() == ".json") presetFiles_.push_back(e.path());
-    std::sort(presetFiles_.begin(), presetFiles_.end());
+    presetFiles_ = listPresetFiles(opt_.presetDir);
 }
 
 EditorSession::~EditorSession() = default;
 
+fs::path EditorSession::sceneBase() const { return presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path(); }
+
 void EditorSession::loadScene(const std::string& spec, const SceneOptions& options) {
     try {
-        fs::path base = presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path();
-        auto scene = std::make_shared<const Scene>(st::loadScene(spec, base, options));
+        const std::string key = sceneKey(spec, sceneBase(), options);
+        auto scene = key == preparedKey_ ? prepared_ : std::make_shared<const Scene>(st::loadScene(spec, sceneBase(), options));
+        prepared_.reset(), preparedKey_.clear();
         renderer_.reset();  // the old renderer refers to the old scene
         scene_ = std::move(scene);
         renderer_ = std::make_unique<Renderer>(*scene_);
         loadedScene_ = spec;
+        loadedKey_ = key;
         loadedOptions_ = options;
         status_.clear();
     } catch (const std::exception& e) {
@@ -56,6 +57,21 @@ void EditorSession::loadScene(const std::string& spec, const SceneOptions& optio
         if (!scene_) throw;  // nothing loaded yet: the session cannot start
         valid_.scene = loadedScene_;  // keep rendering the scene that works; the panel shows why
         valid_.ground = loadedOptions_.ground;
+    }
+}
+
+// Loads the scene the panels are about to choose, so a file that does not load is refused before
+// it reaches the document (issue 13 #1); the scene loaded is kept for loadScene.
+std::string EditorSession::checkScene(const std::string& spec, bool ground, const fs::path& baseDir) {
+    const SceneOptions options{.ground = ground};
+    const std::string key = sceneKey(spec, baseDir, options);
+    if (key == loadedKey_ || key == preparedKey_) return {};
+    try {
+        prepared_ = std::make_shared<const Scene>(st::loadScene(spec, baseDir, options));
+        preparedKey_ = key;
+        return {};
+    } catch (const std::exception& e) {
+        return e.what();
     }
 }
 
@@ -75,20 +91,33 @@ void EditorSession::handleInput() {
         in.forward = key(GLFW_KEY_W), in.back = key(GLFW_KEY_S), in.left = key(GLFW_KEY_A);
         in.right = key(GLFW_KEY_D), in.down = key(GLFW_KEY_Q), in.up = key(GLFW_KEY_E);
     }
+    const CameraSettings before = settings_.camera;
     if (swapped_ && !io.WantCaptureMouse) {  // full-window side camera: left mouse orbits, wheel zooms
         if (io.MouseDown[0]) orbit_.yawDeg -= io.MouseDelta.x * 0.3f, orbit_.pitchDeg += io.MouseDelta.y * 0.3f;
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
-        return;
+    } else if (in.look || in.pan || in.wheel != 0.0f) {
+        // Only then: re-deriving the target from the position each frame drifts by rounding,
+        // and every drift would be an undo step.
+        updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
     }
-    updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
+    // A fly or pan gesture is one undo step (issue 13 #4).
+    if (auto start = cameraGesture_.update(before, settings_.camera, in.look || in.pan)) {
+        Settings atStart = settings_;
+        atStart.camera = *start;
+        ui_->recordEdit(atStart, settings_);
+    }
 }
 
 void EditorSession::applyRequests(const ui::UiRequests& r) {
     if (r.quit) quit_ = true;
-    if (r.frameScene) frameBounds(settings_.camera, scene_->wsBounds);
+    if (r.frameScene) {  // moves the camera only, as one undo step; near/far are tuning settings
+        const Settings before = settings_;
+        status_ = frameKeepingClipPlanes(settings_.camera, scene_->wsBounds);
+        ui_->recordEdit(before, settings_);
+    }
     if (r.swapSideView) swapped_ = !swapped_;
     if (r.presetsChanged) scanPresets();
-    if (r.presetLoaded) presetPath_ = ui_->presetFile();
+    presetPath_ = ui_->presetFile();  // a load or a save may have moved the document
     orbit_.yawDeg -= r.sideViewOrbit.x * 0.3f;
     orbit_.pitchDeg = std::clamp(orbit_.pitchDeg + r.sideViewOrbit.y * 0.3f, -89.0f, 89.0f);
     orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, r.sideViewZoom), 0.05f, 20.0f);
@@ -140,7 +169,7 @@ void EditorSession::present(int width, int height) {
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-ui::UiInputs EditorSession::uiInputs() const {
+ui::UiInputs EditorSession::uiInputs() {
     auto tex = [](GLuint id) { return reinterpret_cast<ImTextureID>(std::uintptr_t(id)); };
     ui::UiInputs in;
     in.stats = &stats_;
@@ -151,6 +180,9 @@ ui::UiInputs EditorSession::uiInputs() const {
     in.presetFiles = presetFiles_;
     in.statusLine = status_;
     in.accuracy = accuracy_->view();
+    in.checkScene = [this](const std::string& spec, bool ground, const fs::path& baseDir) {
+        return checkScene(spec, ground, baseDir);
+    };
     return in;
 }
 
@@ -164,7 +196,7 @@ void EditorSession::frame(const fs::path* screenshot) {
     handleInput();
     const ui::UiRequests requests = ui_->draw(settings_, uiInputs());
     applyRequests(requests);
-    if (const SceneOptions options{.ground = valid_.ground}; valid_.scene != loadedScene_ || options != loadedOptions_)
+    if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
     int width = 0, height = 0;
     window_.framebufferSize(width, height);
@@ -189,7 +221,7 @@ void EditorSession::saveAs(const fs::path& file) {
     Settings s = valid_;
     s.output.width = renderer_->width();
     s.output.height = renderer_->height();
-    savePresetAtomic(s, file);
+    savePresetRebased(s, sceneBase(), file);  // relative scene paths follow the file (issue 13 #1)
     presetPath_ = file;
     std::printf("saved %s\n", file.string().c_str());
 }

@@ -5,6 +5,7 @@
 #include "app/editor_app.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
+#include "app/view_actions.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/shadow_map_view.h"
@@ -35,12 +36,14 @@ public:
 
 private:
     void loadScene(const std::string& spec, const SceneOptions& options);
+    std::string checkScene(const std::string& spec, bool ground, const std::filesystem::path& baseDir);
+    std::filesystem::path sceneBase() const;  // what relative scene paths are relative to
     void handleInput();
     void applyRequests(const ui::UiRequests& r);
     bool renderViews(int width, int height);  // false: the settings failed, the last image stays
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
     void present(int width, int height);
-    ui::UiInputs uiInputs() const;
+    ui::UiInputs uiInputs();
     void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
 
@@ -50,6 +53,9 @@ private:
     Settings settings_;   // what the panels edit
     Settings valid_;      // the last settings that passed validation: what is rendered
     std::string loadedScene_;
+    std::string loadedKey_;                  // sceneKey() of the scene loaded
+    std::shared_ptr<const Scene> prepared_;  // loaded by checkScene, not shown yet
+    std::string preparedKey_;
     SceneOptions loadedOptions_;
     std::shared_ptr<const Scene> scene_;  // shared with the Accuracy panel's background job
     std::unique_ptr<Renderer> renderer_;
@@ -62,6 +68,7 @@ private:
     int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
     FrameStats stats_;
     FlyState fly_;
+    CameraGesture cameraGesture_;
     OrbitCamera orbit_;
     bool swapped_ = false;   // side view full window, main camera in the corner
     bool quit_ = false;

@@ -72,6 +72,10 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     ImGui::GetIO().IniFilename = iniPath_.c_str();
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    // Keys go through our queue instead of the backend's callback, which wrote io.KeysDown
+    // directly; the backend keeps the mouse, wheel and text callbacks.
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetKeyCallback(window_, keyCallback);
     ImGui_ImplOpenGL3_Init("#version 450");
 }
 
@@ -88,8 +92,19 @@ bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_); 
 
 void EditorWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 
+void EditorWindow::keyCallback(GLFWwindow* window, int key, int, int action, int) {
+    if (action == GLFW_REPEAT) return;  // ImGui makes its own repeats from the held key
+    static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->keys_.push(key, action == GLFW_PRESS);
+}
+
 void EditorWindow::beginFrame() {
     glfwPollEvents();
+    ImGuiIO& io = ImGui::GetIO();
+    keys_.feed(io.KeysDown);
+    io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+    io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+    io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+    io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

@@ -4,6 +4,8 @@
 // it); the rest of shadowtune uses libepoxy. Both resolve the same driver entry points.
 // Window size and the ImGui layout (imgui.ini) persist in $XDG_CONFIG_HOME/shadowtune
 // (default ~/.config/shadowtune).
+#include "app/key_queue.h"
+
 #include <filesystem>
 #include <string>
 
@@ -29,7 +31,10 @@ public:
     void framebufferSize(int& w, int& h) const;
 
 private:
+    static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
+
     GLFWwindow* window_ = nullptr;
+    KeyQueue keys_;  // fed to ImGui a change per key per frame, so no tap is lost (issue 13 #3)
     std::filesystem::path configDir_;
     std::string iniPath_;  // must outlive the ImGui context (io.IniFilename points into it)
     std::string title_;

@@ -29,8 +29,9 @@ void frameBounds(CameraSettings& cam, const csm::Aabb& b) {
     glm::vec3 centre = b.center();
     float radius = std::max(0.5f * glm::length(b.extent()), 0.1f);
     float distance = radius / std::sin(0.5f * glm::radians(cam.fovY)) * 1.05f;
+    const glm::vec3 forward = forwardOf(cam);  // before the target moves: the view keeps its direction
     cam.target = centre;
-    cam.position = centre - forwardOf(cam) * distance;
+    cam.position = centre - forward * distance;
     cam.farPlane = std::max(cam.farPlane, distance + 2.0f * radius);
 }
 

@@ -6,7 +6,12 @@
 
 namespace st::ui {
 
-bool isDirty(const Document& doc, const Settings& s) { return doc.clean && *doc.clean != s; }
+Settings documentPart(const Document& doc, Settings s) {
+    if (!doc.saveViewWithPreset && doc.clean) s.output.view = doc.clean->output.view;
+    return s;
+}
+
+bool isDirty(const Document& doc, const Settings& s) { return doc.clean && *doc.clean != documentPart(doc, s); }
 
 bool loadDocument(Document& doc, const std::filesystem::path& file, Settings& s) {
     try {
@@ -32,9 +37,10 @@ bool saveDocument(Document& doc, const Settings& s, const std::filesystem::path&
         return false;
     }
     try {
-        savePresetAtomic(s, file);
+        const Settings saved = documentPart(doc, s);
+        savePresetAtomic(saved, file);
         doc.file = file;
-        doc.clean = s;
+        doc.clean = saved;
         doc.errors.clear();
         doc.status = "Saved " + file.string();
         return true;

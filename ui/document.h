@@ -16,7 +16,13 @@ struct Document {
     std::optional<Settings> clean;     // as last loaded or saved; nullopt until known
     std::vector<std::string> errors;   // of the last failed load or save
     std::string status;                // of the last successful one: "Saved presets/a.json"
+    // The debug view (output.view) is editor state: off, changing it neither dirties the document
+    // nor is saved; the file keeps the view it had (issue 13 #4).
+    bool saveViewWithPreset = false;
 };
+
+// What of `s` belongs to the document: `s`, with the view the file has unless saveViewWithPreset.
+Settings documentPart(const Document& doc, Settings s);
 
 bool isDirty(const Document& doc, const Settings& s);  // false while `clean` is unknown
 
@@ -24,7 +30,7 @@ bool isDirty(const Document& doc, const Settings& s);  // false while `clean` is
 // result is false. On success the document becomes `file`, clean.
 bool loadDocument(Document& doc, const std::filesystem::path& file, Settings& s);
 
-// savePresetAtomic(s, file). On failure (invalid settings, unwritable folder) doc.errors says why.
+// savePresetAtomic(documentPart(s), file). On failure (invalid settings, unwritable folder) doc.errors says why.
 bool saveDocument(Document& doc, const Settings& s, const std::filesystem::path& file);
 
 // A path typed in "Save as": relative paths are taken from presetDir, ".json" is added when the

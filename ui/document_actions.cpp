@@ -1,18 +1,22 @@
 #include "ui/document_actions.h"
 
+#include "renderer/settings/preset_paths.h"
+
 #include <imgui.h>
 
 namespace st::ui {
 namespace {
 
 // An edit gesture still open (e.g. Ctrl+Z pressed before the frame that would close it).
+// A change of the debug view alone is no undo step unless the view is saved with the preset.
 void closeGesture(UiFrame& f) {
     if (!f.state.gestureStart) return;
-    f.state.undo.push(*f.state.gestureStart, f.s);
+    recordStep(f.state, *f.state.gestureStart, f.s);
     f.state.gestureStart.reset();
 }
 
 void replaceSettings(UiFrame& f, Settings restored) {
+    if (!f.state.doc.saveViewWithPreset) restored.output.view = f.s.output.view;
     f.s = std::move(restored);
     f.replaced = true;
 }
@@ -25,8 +29,20 @@ void requestLoad(UiFrame& f, const std::filesystem::path& file) {
     f.state.openConfirm = true;
 }
 
+// A preset whose scene does not load is refused as a whole: the document, the settings and the
+// history stay as they were (issue 13 #1).
 void loadNow(UiFrame& f, const std::filesystem::path& file) {
-    if (!loadDocument(f.state.doc, file, f.s)) return;
+    Document next = f.state.doc;
+    Settings loaded = f.s;
+    const bool read = loadDocument(next, file, loaded);
+    const std::string sceneError = read ? sceneProblem(f, loaded.scene, loaded.ground, file.parent_path()) : "";
+    if (!read || !sceneError.empty()) {
+        f.state.doc.errors = read ? std::vector<std::string>{file.string() + ": scene: " + sceneError} : next.errors;
+        f.state.doc.status.clear();
+        return;
+    }
+    f.state.doc = std::move(next);
+    f.s = std::move(loaded);
     resetHistory(f.state);
     f.state.saveAsText = file.string();
     f.replaced = true;
@@ -39,9 +55,27 @@ void saveCurrent(UiFrame& f) {
     saveAs(f, file);
 }
 
+// Relative file references (the scene) follow the document into the new file's folder: in the
+// file written, in the settings being edited and in the undo history, so all of them keep naming
+// the same files (issue 13 #1).
 void saveAs(UiFrame& f, const std::filesystem::path& file) {
     closeGesture(f);
-    if (saveDocument(f.state.doc, f.s, file)) f.req.presetsChanged = true;
+    const std::filesystem::path from = documentFolder(f.state), to = file.parent_path();
+    Settings rebased = rebasePaths(f.s, from, to);
+    if (!saveDocument(f.state.doc, rebased, file)) return;
+    f.req.presetsChanged = true;
+    if (rebased == f.s) return;
+    f.s = std::move(rebased);
+    f.state.undo.forEach([&](Settings& s) { s = rebasePaths(std::move(s), from, to); });
+    f.replaced = true;
+}
+
+std::string sceneProblem(const UiFrame& f, const std::string& scene, bool ground, const std::filesystem::path& baseDir) {
+    return f.in.checkScene ? f.in.checkScene(scene, ground, baseDir) : std::string();
+}
+
+std::filesystem::path documentFolder(const UiState& state) {
+    return state.doc.file.empty() ? state.presetDir : state.doc.file.parent_path();
 }
 
 void requestQuitFrom(UiState& state, bool dirty) {
@@ -67,6 +101,11 @@ void trackEditGesture(UiFrame& f, const Settings& beforeWidgets) {
     }
     if (f.edited && !f.state.gestureStart) f.state.gestureStart = beforeWidgets;
     if (f.state.gestureStart && !ImGui::IsAnyItemActive()) closeGesture(f);
+}
+
+bool recordStep(UiState& state, Settings before, const Settings& after) {
+    if (!state.doc.saveViewWithPreset) before.output.view = after.output.view;
+    return state.undo.push(before, after);
 }
 
 void undoEdit(UiFrame& f) {

@@ -4,6 +4,7 @@
 #include "ui/ui_state.h"
 
 #include <filesystem>
+#include <string>
 
 namespace st::ui {
 
@@ -15,6 +16,13 @@ void loadNow(UiFrame& f, const std::filesystem::path& file);
 void saveCurrent(UiFrame& f);
 void saveAs(UiFrame& f, const std::filesystem::path& file);
 
+// The folder relative file references of the document are taken from: the file's, or presetDir
+// while untitled.
+std::filesystem::path documentFolder(const UiState& state);
+
+// Why `scene` would not load (UiInputs::checkScene), or "" when it loads or nobody can tell.
+std::string sceneProblem(const UiFrame& f, const std::string& scene, bool ground, const std::filesystem::path& baseDir);
+
 // Quits at once when nothing is unsaved, otherwise after the confirmation.
 void requestQuitFrom(UiState& state, bool dirty);
 
@@ -23,6 +31,10 @@ void runPendingDiscard(UiFrame& f);
 
 // Records the widget edit in progress as one undo step once no widget is active any more.
 void trackEditGesture(UiFrame& f, const Settings& beforeWidgets);
+
+// One undo step from `before` to `after` (e.g. a camera gesture the app made); false when they
+// differ in nothing the document holds.
+bool recordStep(UiState& state, Settings before, const Settings& after);
 
 void undoEdit(UiFrame& f);
 void redoEdit(UiFrame& f);

@@ -65,7 +65,10 @@ UiRequests EditorUi::draw(Settings& s, const UiInputs& in) {
     animateSun(f);
     handleShortcuts(f);
     const Settings beforeWidgets = s;
+    // Tab swaps the views; ImGui would also move the keyboard into the next widget (issue 13 #3).
+    ImGui::PushAllowKeyboardFocus(false);
     drawPanels(f);
+    ImGui::PopAllowKeyboardFocus();
     trackEditGesture(f, beforeWidgets);
     finishFrame(f, atStart);
     return req;
@@ -84,6 +87,14 @@ bool EditorUi::openPreset(const std::filesystem::path& file, Settings& s) {
     state_->saveAsText = file.string();
     resetHistory(*state_);
     return true;
+}
+
+void EditorUi::recordEdit(const Settings& before, const Settings& after) {
+    if (state_->gestureStart) {  // a widget gesture still open: close it at `before`
+        state_->undo.push(*state_->gestureStart, before);
+        state_->gestureStart.reset();
+    }
+    recordStep(*state_, before, after);
 }
 
 void EditorUi::requestQuit() { requestQuitFrom(*state_, state_->dirty); }

@@ -23,6 +23,7 @@
 #include <imgui.h>
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct UiInputs {
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
     AccuracyView accuracy;                   // the background ground truth's state and figures
+    // Loads a scene the panels are about to put into the settings (relative paths from baseDir):
+    // "" when it loads, else why not; the UI then leaves the settings as they are. Unset: every
+    // scene is taken.
+    std::function<std::string(const std::string& scene, bool ground, const std::filesystem::path& baseDir)> checkScene;
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -73,6 +78,7 @@ struct ShortcutKeys {
     int save = 83;    // Ctrl+S
     int frame = 70;   // F: frame the scene
     int help = 290;   // F1: help window
+    int open = 79;    // Ctrl+O: File > Open
 };
 
 // Draws the Accuracy panel's error overlay (an RGBA texture, top row first, straight alpha) over
@@ -100,6 +106,10 @@ public:
     // Loads `file` into `s` (no confirmation asked). On failure `s` is untouched, the problems
     // are listed in the Presets panel and the result is false. Clears the undo history.
     bool openPreset(const std::filesystem::path& file, Settings& s);
+
+    // Records a change the app made to the settings outside draw() (a camera fly or orbit gesture,
+    // frame scene) as one undo step. `after` must be what the next draw() is given.
+    void recordEdit(const Settings& before, const Settings& after);
 
     // The window's close button was pressed: a later draw() returns quit, after a confirmation
     // if there are unsaved changes.

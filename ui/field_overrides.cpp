@@ -2,6 +2,7 @@
 
 #include "renderer/csm/limits.h"
 #include "renderer/scene/scene.h"
+#include "ui/document_actions.h"
 #include "ui/field_rules.h"
 #include "ui/field_widgets.h"
 
@@ -25,6 +26,31 @@ void syncGltfText(UiState& state, const std::string& scene) {
     if (!isBuiltin(scene)) state.gltfText = scene;
 }
 
+// A scene that does not load never reaches the settings (issue 13 #1): the settings, the history
+// and the view stay as they were and the reason is shown under the field until it changes.
+bool storeScene(const FieldInfo& field, UiFrame& f, const std::string& chosen) {
+    if (chosen == f.s.scene) return false;
+    if (std::string error = sceneProblem(f, chosen, f.s.ground, documentFolder(f.state)); !error.empty()) {
+        f.state.sceneError = std::move(error);
+        f.state.sceneErrorFor = chosen;
+        return false;
+    }
+    f.state.sceneError.clear();
+    return storeField(field, f.s, chosen);
+}
+
+void drawSceneError(UiFrame& f) {
+    if (f.state.sceneError.empty()) return;
+    if (f.state.gltfText != f.state.sceneErrorFor && !isBuiltin(f.state.sceneErrorFor)) {
+        f.state.sceneError.clear();  // the path was edited since
+        return;
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+    ImGui::TextWrapped("Not loaded: %s", f.state.sceneError.c_str());
+    ImGui::PopStyleColor();
+    recordItem(f.state.rects, "scene.error");
+}
+
 bool drawBuiltinCombo(const FieldInfo& field, UiFrame& f, const std::string& scene) {
     std::string chosen = scene;
     const std::string preview = isBuiltin(scene) ? scene : "glTF file";
@@ -37,7 +63,7 @@ bool drawBuiltinCombo(const FieldInfo& field, UiFrame& f, const std::string& sce
     }
     recordItem(f.state.rects, std::string(field.path));
     drawHelpMarker(field);
-    return storeField(field, f.s, chosen);
+    return storeScene(field, f, chosen);
 }
 
 bool drawGltfPath(const FieldInfo& field, UiFrame& f) {
@@ -51,16 +77,17 @@ bool drawGltfPath(const FieldInfo& field, UiFrame& f) {
     ImGui::TextUnformatted("glTF file");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("A .gltf/.glb path, relative to the preset's folder; Enter or Use loads it.");
     if (!(entered || use) || f.state.gltfText.empty()) return false;
-    return storeField(field, f.s, f.state.gltfText);
+    return storeScene(field, f, f.state.gltfText);
 }
 
 bool drawScene(const FieldInfo& field, UiFrame& f) {
     const FieldValue value = field.get(f.s);
     const auto* scene = std::get_if<std::string>(&value);
-    if (!scene) return drawFieldWidget(field, f.s, f.state.rects);
+    if (!scene) return drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     syncGltfText(f.state, *scene);
     const bool picked = drawBuiltinCombo(field, f, *scene);
     const bool typed = drawGltfPath(field, f);
+    drawSceneError(f);
     return picked || typed;
 }
 
@@ -86,9 +113,9 @@ bool drawManualSplits(const FieldInfo& field, UiFrame& f) {
     if (f.s.cascades.scheme != SplitScheme::Manual) return false;
     const FieldValue value = field.get(f.s);
     const auto* stored = std::get_if<std::vector<float>>(&value);
-    if (!stored) return drawFieldWidget(field, f.s, f.state.rects);
+    if (!stored) return drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     std::vector<float> splits = fitManualSplits(f.s, rendererSplits(f));
-    editFloatElements(field, splits, f.state.rects);
+    editFloatElements(field, splits, f.state.rects, f.state.fieldEdits);
     return storeField(field, f.s, splits);
 }
 

@@ -1,6 +1,7 @@
 #include "ui/field_rules.h"
 
 #include "renderer/csm/split_range.h"
+#include "renderer/settings/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +58,40 @@ std::string floatFormat(const FieldInfo& field) {
 }
 
 std::string intFormat(const FieldInfo& field) { return "%d" + escapedUnit(field); }
+
+std::string floatFormatFor(const FieldInfo& field, double value) {
+    int decimals = decimalsForStep(field.step);
+    const double a = std::fabs(value);
+    if (a > 0.0 && a < 1.0) decimals = std::max(decimals, static_cast<int>(std::ceil(-std::log10(a) - 1e-9)) + 1);
+    return "%." + std::to_string(std::min(decimals, 6)) + "f" + escapedUnit(field);
+}
+
+std::string elementLabel(const FieldInfo& field, std::size_t i) {
+    return std::string(field.label) + " [" + std::to_string(i) + "]";
+}
+
+std::string typedValueProblem(const FieldInfo& field, double value) {
+    const std::string unit = field.unit.empty() ? "" : " " + std::string(field.unit);
+    if (std::isnan(value)) return "not a number";
+    if (value < field.min || value > field.max)
+        return formatNumber(value) + unit + " is outside " + formatNumber(field.min) + " .. " + formatNumber(field.max) + unit;
+    const bool integral = field.kind == FieldKind::Int;
+    if (integral && field.odd && static_cast<long long>(value) % 2 == 0) return formatNumber(value) + " is even; it must be odd";
+    if (integral && field.powerOfTwo && (static_cast<long long>(value) & (static_cast<long long>(value) - 1)) != 0)
+        return formatNumber(value) + " is not a power of two";
+    return {};
+}
+
+std::string notApplicableReason(const FieldInfo& field, const Settings& s) {
+    const std::string_view p = field.path;
+    if (p == "cascades.lambda" && s.cascades.scheme != SplitScheme::Practical)
+        return "Used by the practical split scheme only (lambda blends uniform and logarithmic splits).";
+    if (p == "cascades.zExtensionDistance" && s.cascades.zExtension != ZExtension::Distance)
+        return "Used when Z extension is \"distance\" only.";
+    if (p == "filter.size" && s.filter.kind != FilterKind::PcfNxN) return "Used by the pcf-nxn filter only.";
+    if (p == "cascades.blendBand" && s.cascades.count < 2) return "Blends one cascade into the next: needs two or more.";
+    return {};
+}
 
 std::vector<int> powerOfTwoChoices(const FieldInfo& field) {
     std::vector<int> sizes;

@@ -27,6 +27,22 @@ int decimalsForStep(double step);            // 0.01 -> 2, 0.5 -> 1, 1 -> 0
 std::string floatFormat(const FieldInfo& field);
 std::string intFormat(const FieldInfo& field);  // "%d px"
 
+// floatFormat with enough decimals to show `value` to two significant digits (at most 6), so a
+// near plane of 0.0001 m does not show as "0.00 m" (issue 13 #7).
+std::string floatFormatFor(const FieldInfo& field, double value);
+
+// Why a typed value cannot be taken as it is ("300 deg is outside -90 .. 90 deg"), or "".
+// Typed values are refused, never clamped; drags stay in range by themselves.
+std::string typedValueProblem(const FieldInfo& field, double value);
+
+// Why `field` does nothing with the rest of `s` as it is ("used by the practical scheme only"),
+// or "" when it applies. The widget is greyed with this as its tooltip.
+std::string notApplicableReason(const FieldInfo& field, const Settings& s);
+
+// The label of element i of a list field, "Manual splits [1]": the index validation messages
+// name ("cascades.manualSplits[1]: ..."), so a message and its widget read the same (issue 13 #7).
+std::string elementLabel(const FieldInfo& field, std::size_t i);
+
 std::vector<int> powerOfTwoChoices(const FieldInfo& field);  // 256, 512, ... 8192 for mapSize
 
 std::string formatBytes(std::size_t bytes);  // "16.0 MiB", "512 KiB", "12 B"

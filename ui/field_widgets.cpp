@@ -4,10 +4,12 @@
 #include "ui/field_rules.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -29,21 +31,69 @@ bool showUnsupported(const FieldInfo& field) {
     return false;
 }
 
-bool editFloat(const FieldInfo& field, Settings& s) {
+// Whether the widget just drawn has the keyboard: a drag or slider in its text mode, an input box.
+bool typing() { return ImGui::IsItemActive() && ImGui::GetInputTextState(ImGui::GetItemID()) != nullptr; }
+
+// The value a numeric widget settles on this frame, if any. While typing, the text is held in
+// `edits.pending` and nothing is applied; when the widget lets the keyboard go (Enter, a click
+// elsewhere) the last typed value is. `typed` tells which values came from the keyboard.
+std::optional<FieldValue> settle(FieldEdits& edits, const std::string& key, bool changed, const FieldValue& value,
+                                 bool& typed) {
+    typed = false;
+    if (typing()) {
+        if (changed) edits.pending[key] = value;
+        return std::nullopt;
+    }
+    if (const auto it = edits.pending.find(key); it != edits.pending.end()) {
+        FieldValue held = changed ? value : it->second;
+        edits.pending.erase(it);
+        typed = true;
+        return held;
+    }
+    if (changed) return value;
+    return std::nullopt;
+}
+
+// A typed number outside the rules is refused, never clamped; the reason stays on screen.
+bool refuse(FieldEdits& edits, const std::string& key, const FieldInfo& field, double value) {
+    std::string problem = typedValueProblem(field, value);
+    if (problem.empty()) {
+        edits.refused.erase(key);
+        return false;
+    }
+    edits.refused[key] = std::move(problem);
+    return true;
+}
+
+void drawRefusal(const FieldEdits& edits, const std::string& key, ItemRects& rects) {
+    const auto it = edits.refused.find(key);
+    if (it == edits.refused.end()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+    ImGui::TextWrapped("  %s: not applied", it->second.c_str());
+    ImGui::PopStyleColor();
+    recordItem(rects, key + "#refused");
+}
+
+bool editFloat(const FieldInfo& field, Settings& s, FieldEdits& edits) {
     const FieldValue current = field.get(s);
     const float* stored = std::get_if<float>(&current);
     if (!stored) return showUnsupported(field);
     float value = *stored;
-    const std::string format = floatFormat(field);
+    const std::string format = floatFormatFor(field, *stored);
     const bool changed = prefersSlider(field)
-        ? ImGui::SliderFloat(labelOf(field).c_str(), &value, lowOf(field), highOf(field), format.c_str(),
-                             ImGuiSliderFlags_AlwaysClamp)
-        : ImGui::DragFloat(labelOf(field).c_str(), &value, speedOf(field), lowOf(field), highOf(field),
-                           format.c_str(), ImGuiSliderFlags_AlwaysClamp);
-    return changed && storeField(field, s, static_cast<float>(clampToField(field, value)));
+        ? ImGui::SliderFloat(labelOf(field).c_str(), &value, lowOf(field), highOf(field), format.c_str())
+        : ImGui::DragFloat(labelOf(field).c_str(), &value, speedOf(field), lowOf(field), highOf(field), format.c_str());
+    const std::string key(field.path);
+    bool typed = false;
+    const auto settled = settle(edits, key, changed, value, typed);
+    if (!settled) return false;
+    const float v = std::get<float>(*settled);
+    if (typed && refuse(edits, key, field, v)) return false;
+    if (!typed) edits.refused.erase(key);
+    return storeField(field, s, static_cast<float>(clampToField(field, v)));
 }
 
-bool editInt(const FieldInfo& field, Settings& s) {
+bool editInt(const FieldInfo& field, Settings& s, FieldEdits& edits) {
     if (field.powerOfTwo) return editPowerOfTwo(field, s, nullptr);
     const FieldValue current = field.get(s);
     const int* stored = std::get_if<int>(&current);
@@ -52,9 +102,16 @@ bool editInt(const FieldInfo& field, Settings& s) {
     const int step = field.step >= 1.0 ? static_cast<int>(field.step) : 1;
     const bool changed = (prefersSlider(field) && !field.odd)
         ? ImGui::SliderInt(labelOf(field).c_str(), &value, static_cast<int>(field.min),
-                           static_cast<int>(field.max), intFormat(field).c_str(), ImGuiSliderFlags_AlwaysClamp)
+                           static_cast<int>(field.max), intFormat(field).c_str())
         : ImGui::InputInt(labelOf(field).c_str(), &value, step, step * 10);
-    return changed && storeField(field, s, legalInt(field, value, *stored));
+    const std::string key(field.path);
+    bool typed = false;
+    const auto settled = settle(edits, key, changed, value, typed);
+    if (!settled) return false;
+    const int v = std::get<int>(*settled);
+    if (typed && refuse(edits, key, field, v)) return false;
+    if (!typed) edits.refused.erase(key);
+    return storeField(field, s, legalInt(field, v, *stored));
 }
 
 bool editBool(const FieldInfo& field, Settings& s) {
@@ -91,25 +148,32 @@ bool editString(const FieldInfo& field, Settings& s) {
     return ImGui::InputText(labelOf(field).c_str(), &value) && storeField(field, s, value);
 }
 
-bool editVec3(const FieldInfo& field, Settings& s) {
+bool editVec3(const FieldInfo& field, Settings& s, FieldEdits& edits) {
     const FieldValue current = field.get(s);
     const glm::vec3* stored = std::get_if<glm::vec3>(&current);
     if (!stored) return showUnsupported(field);
     glm::vec3 value = *stored;
-    if (!ImGui::DragFloat3(labelOf(field).c_str(), &value.x, speedOf(field), lowOf(field), highOf(field),
-                           floatFormat(field).c_str(), ImGuiSliderFlags_AlwaysClamp)) {
-        return false;
+    const bool changed = ImGui::DragFloat3(labelOf(field).c_str(), &value.x, speedOf(field), lowOf(field), highOf(field),
+                                           floatFormat(field).c_str());
+    const std::string key(field.path);
+    bool typed = false;
+    const auto settled = settle(edits, key, changed, value, typed);
+    if (!settled) return false;
+    glm::vec3 v = std::get<glm::vec3>(*settled);
+    for (int i = 0; i < 3; ++i) {
+        if (typed && refuse(edits, key, field, v[i])) return false;
+        v[i] = static_cast<float>(clampToField(field, v[i]));
     }
-    for (int i = 0; i < 3; ++i) value[i] = static_cast<float>(clampToField(field, value[i]));
-    return storeField(field, s, value);
+    if (!typed) edits.refused.erase(key);
+    return storeField(field, s, v);
 }
 
-bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects) {
+bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits& edits) {
     const FieldValue current = field.get(s);
     const auto* stored = std::get_if<std::vector<float>>(&current);
     if (!stored) return showUnsupported(field);
     std::vector<float> values = *stored;
-    bool changed = editFloatElements(field, values, rects);
+    bool changed = editFloatElements(field, values, rects, edits);
     if (ImGui::SmallButton("Add")) {
         values.push_back(values.empty() ? static_cast<float>(field.min) : values.back());
         changed = true;
@@ -122,15 +186,15 @@ bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects) {
     return changed && storeField(field, s, values);
 }
 
-bool dispatch(const FieldInfo& field, Settings& s, ItemRects& rects) {
+bool dispatch(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits& edits) {
     switch (field.kind) {
-        case FieldKind::Float: return editFloat(field, s);
-        case FieldKind::Int: return editInt(field, s);
+        case FieldKind::Float: return editFloat(field, s, edits);
+        case FieldKind::Int: return editInt(field, s, edits);
         case FieldKind::Bool: return editBool(field, s);
         case FieldKind::Enum: return editEnum(field, s);
         case FieldKind::String: return editString(field, s);
-        case FieldKind::Vec3: return editVec3(field, s);
-        case FieldKind::FloatList: return editFloatList(field, s, rects);
+        case FieldKind::Vec3: return editVec3(field, s, edits);
+        case FieldKind::FloatList: return editFloatList(field, s, rects, edits);
         default: return showUnsupported(field);  // a kind added to the table after this code
     }
 }
@@ -152,12 +216,21 @@ bool storeField(const FieldInfo& field, Settings& s, const FieldValue& value) {
     return true;
 }
 
-bool drawFieldWidget(const FieldInfo& field, Settings& s, ItemRects& rects) {
+bool drawFieldWidget(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits& edits) {
     if (!field.get || !field.set) return showUnsupported(field);
-    const bool changed = dispatch(field, s, rects);
+    // Greyed, still editable: the value is kept for when the mode that reads it comes back.
+    const std::string unused = notApplicableReason(field, s);
+    if (!unused.empty()) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ImGui::GetStyle().Alpha * 0.45f);
+    const bool changed = dispatch(field, s, rects, edits);
+    if (!unused.empty()) {
+        ImGui::PopStyleVar();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", unused.c_str());
+    }
     if (field.kind == FieldKind::FloatList) return changed;  // elements and marker drawn by the list
+    recordItem(rects, std::string(field.path) + (unused.empty() ? "" : "#unused"));
     recordItem(rects, std::string(field.path));
     drawHelpMarker(field);
+    drawRefusal(edits, std::string(field.path), rects);
     return changed;
 }
 
@@ -194,21 +267,28 @@ bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std
     return chosen != *stored && storeField(field, s, chosen);
 }
 
-bool editFloatElements(const FieldInfo& field, std::vector<float>& values, ItemRects& rects) {
+bool editFloatElements(const FieldInfo& field, std::vector<float>& values, ItemRects& rects, FieldEdits& edits) {
     ImGui::TextUnformatted(field.label.data(), field.label.data() + field.label.size());
     drawHelpMarker(field);
     bool changed = false;
-    const std::string format = floatFormat(field);
     for (std::size_t i = 0; i < values.size(); ++i) {
         ImGui::PushID(static_cast<int>(i));
-        const std::string label = std::string(field.label) + " " + std::to_string(i + 1);
+        const std::string label = elementLabel(field, i);
+        const std::string key = std::string(field.path) + "[" + std::to_string(i) + "]";
         float value = values[i];
-        if (ImGui::DragFloat(label.c_str(), &value, speedOf(field), lowOf(field), highOf(field), format.c_str(),
-                             ImGuiSliderFlags_AlwaysClamp)) {
-            values[i] = static_cast<float>(clampToField(field, value));
-            changed = true;
+        const bool moved = ImGui::DragFloat(label.c_str(), &value, speedOf(field), lowOf(field), highOf(field),
+                                            floatFormatFor(field, values[i]).c_str());
+        recordItem(rects, key);
+        bool typed = false;
+        if (const auto settled = settle(edits, key, moved, value, typed)) {
+            const float v = std::get<float>(*settled);
+            if (!typed || !refuse(edits, key, field, v)) {
+                if (!typed) edits.refused.erase(key);
+                values[i] = static_cast<float>(clampToField(field, v));
+                changed = true;
+            }
         }
-        recordItem(rects, std::string(field.path) + "[" + std::to_string(i) + "]");
+        drawRefusal(edits, key, rects);
         ImGui::PopID();
     }
     return changed;

@@ -14,17 +14,18 @@ struct Shortcut {
     const char* action;
 };
 
-constexpr std::array<Shortcut, 11> kShortcuts{{
+constexpr std::array<Shortcut, 12> kShortcuts{{
     {"Right mouse + W A S D", "fly the camera"},
     {"Right mouse + Q / E", "fly down / up"},
     {"Mouse wheel", "fly speed"},
     {"Middle mouse drag", "pan the camera"},
-    {"F", "frame the scene"},
+    {"F", "frame the scene (near/far kept)"},
     {"Tab", "swap the side view with the main view"},
     {"Drag / wheel on side view", "orbit / zoom the side camera"},
     {"Ctrl+Z", "undo a settings change"},
     {"Ctrl+Shift+Z", "redo"},
     {"Ctrl+S", "save the preset"},
+    {"Ctrl+O", "open a preset by path"},
     {"F1", "show or hide this help"},
 }};
 

@@ -1,5 +1,7 @@
 // The main menu bar: the same actions as the shortcuts and panel buttons, discoverable.
+#include "renderer/settings/enum_names.h"
 #include "ui/document_actions.h"
+#include "ui/field_widgets.h"
 #include "ui/panels.h"
 
 #include <imgui.h>
@@ -8,7 +10,15 @@ namespace st::ui {
 namespace {
 
 void fileMenu(UiFrame& f) {
-    if (!ImGui::BeginMenu("File")) return;
+    const bool open = ImGui::BeginMenu("File");
+    recordItem(f.state.rects, "menu.file");
+    if (!open) return;
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) showOpenDialog(f.state);
+    recordItem(f.state.rects, "menu.open");
+    const bool dirty = isDirty(f.state.doc, f.s);
+    if (ImGui::MenuItem("Revert", nullptr, false, dirty && !f.state.doc.file.empty())) requestLoad(f, f.state.doc.file);
+    recordItem(f.state.rects, "menu.revert");
+    ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(f);
     if (ImGui::MenuItem("Quit")) requestQuitFrom(f.state, isDirty(f.state.doc, f.s));
     ImGui::EndMenu();
@@ -21,10 +31,29 @@ void editMenu(UiFrame& f) {
     ImGui::EndMenu();
 }
 
+// The debug views, and whether the one shown is saved with the preset (issue 13 #4: off, the
+// view is editor state, so looking at the cascades neither dirties the preset nor is undone).
+void debugViewItems(UiFrame& f) {
+    const FieldInfo* view = findField("output.view");
+    for (std::size_t i = 0; view && i < EnumNames<View>::names.size(); ++i) {
+        const std::string name(EnumNames<View>::names[i]);
+        if (ImGui::MenuItem(name.c_str(), nullptr, shaderCode(f.s.output.view) == int(i)))
+            f.edited = storeField(*view, f.s, int(i)) || f.edited;
+        recordItem(f.state.rects, "menu.view." + name);
+    }
+    ImGui::MenuItem("Save view with preset", nullptr, &f.state.doc.saveViewWithPreset);
+    recordItem(f.state.rects, "menu.saveView");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: the debug view is not written into the preset and is no undo step.");
+}
+
 void viewMenu(UiFrame& f) {
-    if (!ImGui::BeginMenu("View")) return;
+    const bool open = ImGui::BeginMenu("View");
+    recordItem(f.state.rects, "menu.view");
+    if (!open) return;
     if (ImGui::MenuItem("Frame scene", "F")) f.req.frameScene = true;
     if (ImGui::MenuItem("Swap side view", "Tab")) f.req.swapSideView = true;
+    ImGui::Separator();
+    debugViewItems(f);
     ImGui::Separator();
     ImGui::MenuItem("Shadow maps", nullptr, &f.state.showShadowMaps);
     ImGui::MenuItem("Side view", nullptr, &f.state.showSideView);
@@ -36,11 +65,13 @@ void viewMenu(UiFrame& f) {
 }  // namespace
 
 void drawMenuBar(UiFrame& f) {
-    if (!ImGui::BeginMainMenuBar()) return;
-    fileMenu(f);
-    editMenu(f);
-    viewMenu(f);
-    ImGui::EndMainMenuBar();
+    if (ImGui::BeginMainMenuBar()) {
+        fileMenu(f);
+        editMenu(f);
+        viewMenu(f);
+        ImGui::EndMainMenuBar();
+    }
+    drawOpenDialog(f);
 }
 
 }  // namespace st::ui

@@ -14,5 +14,8 @@ void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with 
 void drawHelpWindow(UiFrame& f);      // help_window.cpp: shortcuts (F1)
 void drawAccuracyPanel(UiFrame& f);   // accuracy_panel.cpp: ground-truth figures, overlay toggle
 void drawConfirmDiscard(UiFrame& f);  // confirm_modal.cpp: "discard unsaved changes?"
+void drawSunAnimation(UiFrame& f);    // sun_preview.cpp: "animate sun", a preview undone when stopped
+void drawOpenDialog(UiFrame& f);      // open_dialog.cpp: File > Open, a path with completion
+void showOpenDialog(UiState& state);  // open_dialog.cpp: opens it, the cursor in the path
 
 }  // namespace st::ui

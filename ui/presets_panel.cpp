@@ -49,8 +49,20 @@ void drawSaveAs(UiFrame& f) {
     }
 }
 
+// A heading for each sub-folder of the preset folder ("scenes/"), the files indented under it.
+void drawFolderHeading(const UiFrame& f, const std::filesystem::path& folder) {
+    const std::filesystem::path rel = folder.lexically_relative(f.state.presetDir);
+    const bool sub = !rel.empty() && rel != "." && *rel.begin() != "..";
+    ImGui::TextDisabled("%s/", (sub ? rel : folder).string().c_str());
+}
+
 void drawPresetEntries(UiFrame& f) {
+    std::filesystem::path folder;
     for (const auto& file : f.in.presetFiles) {
+        if (file.parent_path() != folder) {
+            folder = file.parent_path();
+            if (folder.lexically_normal() != f.state.presetDir.lexically_normal()) drawFolderHeading(f, folder);
+        }
         const std::string name = file.filename().string();
         const bool current = file == f.state.doc.file;
         if (ImGui::Selectable(name.c_str(), current)) requestLoad(f, file);

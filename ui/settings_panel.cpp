@@ -60,20 +60,10 @@ void drawFieldIssues(const UiFrame& f, const FieldInfo& field) {
 void drawField(UiFrame& f, const FieldInfo& field) {
     ImGui::PushID(field.path.data(), field.path.data() + field.path.size());
     const FieldOverride custom = overrideFor(field.path);
-    const bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects);
+    const bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     f.edited = f.edited || changed;
     drawFieldIssues(f, field);
     ImGui::PopID();
-}
-
-void drawSunAnimation(UiFrame& f) {
-    ImGui::Checkbox("Animate sun", &f.state.animateSun);
-    recordItem(f.state.rects, "sun.animate");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-    ImGui::DragFloat("##sunSpeed", &f.state.sunDegPerSecond, 0.5f, -180.0f, 180.0f, "%.1f deg/s",
-                     ImGuiSliderFlags_AlwaysClamp);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Azimuth turn rate while the sun is animated (not saved).");
 }
 
 // What a group shows after its fields: the sun toggle, the cascade figures.

@@ -12,7 +12,7 @@ bool pressed(int keyCode) {
     return keyCode >= 0 && keyCode < IM_ARRAYSIZE(ImGuiIO::KeysDown) && ImGui::IsKeyPressed(keyCode, false);
 }
 
-// Ctrl+Z / Ctrl+Shift+Z / Ctrl+S: not while a text field has the keyboard (it has its own undo).
+// Ctrl+Z / Ctrl+Shift+Z / Ctrl+S / Ctrl+O: not while a text field has the keyboard (it has its own undo).
 void editingShortcuts(UiFrame& f, const ImGuiIO& io) {
     if (!io.KeyCtrl || io.WantTextInput || ImGui::IsAnyItemActive()) return;
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Z))) {
@@ -23,6 +23,7 @@ void editingShortcuts(UiFrame& f, const ImGuiIO& io) {
         }
     }
     if (pressed(f.state.keys.save)) saveCurrent(f);
+    if (pressed(f.state.keys.open)) showOpenDialog(f.state);
 }
 
 // F, Tab, F1: only when no widget wants the keyboard.

@@ -5,6 +5,7 @@
 #include "renderer/settings/validation.h"
 #include "ui/document.h"
 #include "ui/editor_ui.h"
+#include "ui/field_widgets.h"
 #include "ui/history.h"
 #include "ui/undo_stack.h"
 
@@ -32,6 +33,7 @@ struct UiState {
 
     bool animateSun = false;               // UI state, not Settings: advances light.azimuth
     float sunDegPerSecond = 10.0f;
+    float sunPreviewFrom = 0.0f;           // light.azimuth when the animation started: restored at stop
     TimingHistory timing;
 
     bool showShadowMaps = true;
@@ -42,14 +44,23 @@ struct UiState {
     int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
 
     std::string saveAsText;                // the "Save as" path field
+    bool showOpen = false;                 // File > Open's window
+    bool focusOpenPath = false;            // ... put the cursor in its path field this frame
+    std::string openText;                  // its path field
+    std::string openCandidatesFor;         // the text openCandidates were listed for
+    std::vector<std::string> openCandidates;
+    bool openCandidatesKnown = false;
     std::string gltfText;                  // the scene's glTF path field
     std::string gltfTextFor;               // the scene value gltfText was last synced from
+    std::string sceneError;                // why the scene last chosen did not load (shown in red)
+    std::string sceneErrorFor;             // ... the value refused; the message goes when the field changes
 
     PendingDiscard pending;
     bool openConfirm = false;              // open the confirmation modal this frame
     bool quitConfirmed = false;            // draw() returns quit
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
+    FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused
     ItemRects rects;
 };
 

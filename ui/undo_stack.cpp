@@ -36,4 +36,9 @@ void UndoStack::clear() {
     redo_.clear();
 }
 
+void UndoStack::forEach(const std::function<void(Settings&)>& fn) {
+    for (Settings& s : undo_) fn(s);
+    for (Settings& s : redo_) fn(s);
+}
+
 }  // namespace st::ui

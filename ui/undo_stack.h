@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <optional>
 
 namespace st::ui {
@@ -28,6 +29,8 @@ public:
     std::size_t undoCount() const { return undo_.size(); }
     std::size_t redoCount() const { return redo_.size(); }
     void clear();
+    // Applies `fn` to every entry, e.g. to rewrite relative paths after a save into another folder.
+    void forEach(const std::function<void(Settings&)>& fn);
 
 private:
     std::size_t capacity_;

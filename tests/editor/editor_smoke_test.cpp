@@ -110,3 +110,24 @@ TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     EXPECT_GT(countNear(img, 230, 20, 20, 4), 5000) << "no false-shadow overlay over the scene";
     fs::remove_all(dir);
 }
+
+// Issue 13 #1: --save-as into another folder used to keep "../../../shared/assets/..." as it was,
+// so `render` of the saved file failed with "scene file not found".
+TEST(EditorSmokeTest, SaveAsIntoAnotherFolderWritesAPresetThatRenders) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run missing (scripts/setup.sh installs xvfb)";
+    const fs::path source = ST_PRESET_DIR "/scenes/fox.json";
+    if (!fs::exists(source.parent_path() / st::loadPreset(source).scene)) GTEST_SKIP() << "../shared/assets missing";
+    fs::path dir = fs::temp_directory_path() / ("st-saveas-" + std::to_string(::getpid()));
+    fs::create_directories(dir / "a" / "b");
+    const std::string log = " > '" + (dir / "log.txt").string() + "' 2>&1";
+    const std::string editor = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" ST_SHADOWTUNE
+                               "' editor '" + source.string() + "' --frames 2 --save-as '" +
+                               (dir / "a" / "b" / "fox.json").string() + "'" + log;
+    ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << (dir / "log.txt");
+    const std::string render = "'" ST_SHADOWTUNE "' render '" + (dir / "a" / "b" / "fox.json").string() +
+                               "' --size 160x90 --out '" + (dir / "out").string() + "'" + log;
+    EXPECT_EQ(std::system(render.c_str()), 0) << "render of the saved preset failed, see " << (dir / "log.txt");
+    EXPECT_TRUE(fs::exists(dir / "out" / "fox.png"));
+    EXPECT_TRUE(fs::path(st::loadPreset(dir / "a" / "b" / "fox.json").scene).is_relative());
+    fs::remove_all(dir);
+}

@@ -2,6 +2,8 @@
 // the widgets come from the field table, edits are clamped, undo merges a drag, presets load and
 // save through the panel, problems are shown instead of thrown.
 #include "renderer/settings/settings_json.h"
+#include "renderer/settings/validation.h"
+#include "ui/field_rules.h"
 #include "tests/ui/ui_driver.h"
 #include "tests/ui/ui_test_data.h"
 
@@ -97,15 +99,86 @@ TEST_F(EditorUiTest, UndoRevertsAWholeDragAndRedoReappliesIt) {
     EXPECT_EQ(d.s.light.elevation, before);
 }
 
-TEST_F(EditorUiTest, TypedValuesAreClampedToTheTableRange) {
+// Issue 13 #7: lambda 5 used to become 1 and count 12 become 8 without a word.
+TEST_F(EditorUiTest, TypedValuesOutsideTheRangeAreRefusedWithTheRangeNotClamped) {
+    const float lambda = d.s.cascades.lambda;
     d.ctrlClick(d.rect("cascades.lambda").center());  // Ctrl+click turns a slider into a text field
     d.typeText("5");
     d.pressKey(kKeyEnter);
-    EXPECT_EQ(d.s.cascades.lambda, 1.0f);
+    EXPECT_EQ(d.s.cascades.lambda, lambda);
+    ASSERT_TRUE(d.drawn("cascades.lambda#refused"));
     d.ctrlClick(d.rect("cascades.count").center());
     d.typeText("12");
     d.pressKey(kKeyEnter);
-    EXPECT_EQ(d.s.cascades.count, 8);
+    EXPECT_EQ(d.s.cascades.count, 4);
+    EXPECT_TRUE(d.drawn("cascades.count#refused"));
+    EXPECT_TRUE(d.last.settingsValid);
+    d.ctrlClick(d.rect("cascades.lambda").center());
+    d.typeText("0.25");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.cascades.lambda, 0.25f);
+    EXPECT_FALSE(d.drawn("cascades.lambda#refused")) << "the message goes once the field is set";
+}
+
+TEST_F(EditorUiTest, TypedNumbersApplyOnEnterOrFocusLossNotPerKeystroke) {
+    const float elevation = d.s.light.elevation;
+    d.ctrlClick(d.rect("light.elevation").center());
+    d.typeText("3");
+    EXPECT_EQ(d.s.light.elevation, elevation);
+    d.typeText("0");
+    EXPECT_EQ(d.s.light.elevation, elevation) << "typing 30 must not apply 3 first";
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.light.elevation, 30.0f);
+    d.ctrlClick(d.rect("light.elevation").center());
+    d.typeText("12");
+    d.click(d.rect("light.azimuth").center());  // the field loses the keyboard
+    EXPECT_EQ(d.s.light.elevation, 12.0f);
+}
+
+// Issue 13 #7: "filter size -5 becomes 3".
+TEST_F(EditorUiTest, ANegativeFilterSizeTypedIntoItsBoxIsRefused) {
+    d.s.filter.kind = FilterKind::PcfNxN;
+    d.s.filter.size = 5;
+    d.frame();
+    d.scroll(d.rect("light.elevation").center(), -10.0f);  // the Filter group is below the fold
+    ASSERT_LT(d.rect("filter.size").max.y, 700.0f);
+    d.click("filter.size");
+    d.pressKey(65, true);  // Ctrl+A
+    d.typeText("-5");
+    EXPECT_EQ(d.s.filter.size, 5) << "nothing applies while typing";
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.filter.size, 5);
+    EXPECT_TRUE(d.drawn("filter.size#refused"));
+    d.click("filter.size");
+    d.pressKey(65, true);
+    d.typeText("7");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.filter.size, 7);
+    EXPECT_FALSE(d.drawn("filter.size#refused"));
+}
+
+TEST_F(EditorUiTest, FieldsTheModeDoesNotUseAreGreyed) {
+    d.s.cascades.scheme = SplitScheme::Uniform;
+    d.s.filter.kind = FilterKind::Pcf2x2;
+    d.frame();
+    EXPECT_TRUE(d.drawn("cascades.lambda#unused"));
+    EXPECT_TRUE(d.drawn("filter.size#unused"));
+    EXPECT_FALSE(d.drawn("light.elevation#unused"));
+    d.s.cascades.scheme = SplitScheme::Practical;
+    d.frame();
+    EXPECT_FALSE(d.drawn("cascades.lambda#unused"));
+}
+
+TEST_F(EditorUiTest, ManualSplitLabelsUseTheIndexValidationNames) {
+    d.s.cascades.scheme = SplitScheme::Manual;
+    d.s.cascades.manualSplits = {6.2f, 5.0f, 92.0f};  // [1] is not increasing
+    d.frames(2);
+    const auto issues = findIssues(d.s);
+    ASSERT_FALSE(issues.empty());
+    const std::string& path = issues.front().path;  // "cascades.manualSplits[1]"
+    const std::string label = ui::elementLabel(*findField("cascades.manualSplits"), 1);
+    EXPECT_EQ(path.substr(path.find('[')), label.substr(label.find('['))) << path << " vs " << label;
+    EXPECT_TRUE(d.drawn("cascades.manualSplits[1]"));
 }
 
 TEST_F(EditorUiTest, SaveWritesTheEditedSettingsAndClearsTheDirtyMarker) {

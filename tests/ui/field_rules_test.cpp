@@ -109,3 +109,33 @@ TEST(FieldRulesTest, AzimuthWrapsIntoTheFieldRange) {
     EXPECT_FLOAT_EQ(advanceAzimuth(5.0f, -10.0f), 355.0f);
     EXPECT_FLOAT_EQ(advanceAzimuth(-300.0f, 0.0f), 60.0f);
 }
+
+// Issue 13 #7: near 0.0001 showed as "0.00 m"; typed values were clamped without a word.
+TEST(FieldRulesTest, SmallValuesKeepTwoSignificantDigitsOnScreen) {
+    const FieldInfo& nearPlane = *findField("camera.nearPlane");
+    EXPECT_EQ(floatFormatFor(nearPlane, 0.1), "%.2f m");
+    EXPECT_EQ(floatFormatFor(nearPlane, 0.0001), "%.5f m");
+    EXPECT_EQ(floatFormatFor(nearPlane, 250.0), "%.2f m");
+    EXPECT_EQ(floatFormatFor(*findField("camera.farPlane"), 0.1), "%.2f m");
+}
+
+TEST(FieldRulesTest, TypedValuesOutsideTheRulesAreNamedWithTheRange) {
+    EXPECT_EQ(typedValueProblem(*findField("filter.size"), -5), "-5 taps is outside 3 .. 9 taps");
+    EXPECT_EQ(typedValueProblem(*findField("filter.size"), 4), "4 is even; it must be odd");
+    EXPECT_EQ(typedValueProblem(*findField("cascades.lambda"), 5), "5 is outside 0 .. 1");
+    EXPECT_EQ(typedValueProblem(*findField("camera.nearPlane"), -1), "-1 m is outside 0.0001 .. 10000 m");
+    EXPECT_EQ(typedValueProblem(*findField("cascades.lambda"), 0.3), "");
+}
+
+TEST(FieldRulesTest, FieldsOfOtherModesSayWhyTheyDoNotApply) {
+    Settings s;
+    s.cascades.scheme = SplitScheme::Logarithmic;
+    EXPECT_NE(notApplicableReason(*findField("cascades.lambda"), s).find("practical"), std::string::npos);
+    s.cascades.scheme = SplitScheme::Practical;
+    EXPECT_EQ(notApplicableReason(*findField("cascades.lambda"), s), "");
+    s.filter.kind = FilterKind::PcfNxN;
+    EXPECT_EQ(notApplicableReason(*findField("filter.size"), s), "");
+    s.cascades.zExtension = ZExtension::Pancake;
+    EXPECT_NE(notApplicableReason(*findField("cascades.zExtensionDistance"), s), "");
+    EXPECT_EQ(notApplicableReason(*findField("light.elevation"), s), "");
+}

@@ -1,0 +1,34 @@
+#include "renderer/settings/preset_paths.h"
+
+#include "renderer/settings/settings_json.h"
+
+namespace fs = std::filesystem;
+
+namespace st {
+namespace {
+
+fs::path absoluteFolder(const fs::path& dir) {
+    std::error_code ec;  // no current folder: the path is kept as given
+    const fs::path abs = fs::absolute(dir.empty() ? fs::path(".") : dir, ec);
+    return (ec ? dir : abs).lexically_normal();
+}
+
+}  // namespace
+
+std::string rebaseFileReference(const std::string& ref, const fs::path& fromDir, const fs::path& toDir) {
+    if (ref.empty() || ref.starts_with("builtin:") || fs::path(ref).is_absolute()) return ref;
+    const fs::path target = (absoluteFolder(fromDir) / ref).lexically_normal();
+    const fs::path relative = target.lexically_relative(absoluteFolder(toDir));
+    return relative.empty() ? target.string() : relative.string();
+}
+
+Settings rebasePaths(Settings s, const fs::path& fromDir, const fs::path& toDir) {
+    s.scene = rebaseFileReference(s.scene, fromDir, toDir);
+    return s;
+}
+
+void savePresetRebased(const Settings& s, const fs::path& fromDir, const fs::path& file) {
+    savePresetAtomic(rebasePaths(s, fromDir, file.parent_path()), file);
+}
+
+}  // namespace st

@@ -1,0 +1,25 @@
+#pragma once
+// File references inside a preset are relative to the preset's own folder. A preset written to
+// another folder must have them rewritten, or it names files that are not there (issue 13 #1).
+// The only file reference a preset holds today is `scene`; rebasePaths is the one place that
+// knows the list.
+#include "renderer/settings/settings.h"
+
+#include <filesystem>
+#include <string>
+
+namespace st {
+
+// `ref` as written in a preset in `fromDir`, rewritten for a preset in `toDir`: relative again
+// where a relative path exists, else absolute. "builtin:..." names, absolute paths and "" are
+// returned as they are.
+std::string rebaseFileReference(const std::string& ref, const std::filesystem::path& fromDir,
+                                const std::filesystem::path& toDir);
+
+// `s` with every file reference rebased from `fromDir` to `toDir`.
+Settings rebasePaths(Settings s, const std::filesystem::path& fromDir, const std::filesystem::path& toDir);
+
+// savePresetAtomic of `s`, whose references are relative to `fromDir`, rebased for `file`'s folder.
+void savePresetRebased(const Settings& s, const std::filesystem::path& fromDir, const std::filesystem::path& file);
+
+}  // namespace st

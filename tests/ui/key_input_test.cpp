@@ -1,0 +1,117 @@
+// Short key taps at a low frame rate reach the UI, and Tab does not move widget focus
+// (issue 13 #3). ImGui's null backend with the app's key queue between "GLFW" and ImGui.
+#include "app/key_queue.h"
+#include "tests/ui/ui_driver.h"
+#include "tests/ui/ui_test_data.h"
+
+#include <gtest/gtest.h>
+
+using namespace st;
+using namespace st::test;
+
+TEST(KeyQueueTest, APressAndReleaseBetweenTwoFramesShowInTwoFrames) {
+    app::KeyQueue q;
+    bool keys[512] = {};
+    q.push(kKeyF1, true);
+    q.push(kKeyF1, false);  // released 10 ms later, long before the next frame
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[kKeyF1]);
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_FALSE(keys[kKeyF1]);
+}
+
+TEST(KeyQueueTest, DifferentKeysGoTogetherAndRepeatsAndStrayCodesAreDropped) {
+    app::KeyQueue q;
+    bool keys[512] = {};
+    q.push(341, true);      // Ctrl
+    q.push(kKeyS, true);    // S
+    q.push(kKeyS, true);    // a repeat
+    q.push(-1, true);       // GLFW_KEY_UNKNOWN
+    q.push(9999, true);
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_TRUE(keys[341] && keys[kKeyS]);
+    q.push(kKeyS, false);
+    q.push(kKeyS, true);
+    q.push(kKeyS, false);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_FALSE(keys[kKeyS]);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[kKeyS]);
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_FALSE(keys[kKeyS]);
+}
+
+TEST(KeyQueueTest, AKeyThatWaitsDoesNotHoldBackTheOthers) {
+    app::KeyQueue q;
+    bool keys[512] = {};
+    for (int key : {83, 83, 70}) {  // "s", "s", "f" typed within one frame
+        q.push(key, true);
+        q.push(key, false);
+    }
+    q.push(kKeyEnter, true);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[83] && keys[70] && keys[kKeyEnter]);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_FALSE(keys[83] || keys[70]);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[83]);  // the second s
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_FALSE(keys[83]);
+}
+
+namespace {
+
+// Frames at 6 fps; `tap` puts a press and its release into the queue between two frames, as
+// GLFW's callback does for a 10 ms tap, and counts the frames until the queue is empty.
+class SlowFrameTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ImGui::GetIO().DeltaTime = 1.0f / 6.0f;
+        d.in.stats = &stats;
+        d.frames(2);
+    }
+    void frame() {
+        queue.feed(ImGui::GetIO().KeysDown);
+        d.frame();
+    }
+    void tap(int key) {
+        queue.push(key, true);
+        queue.push(key, false);
+        do frame(); while (!queue.empty());
+        frame();
+    }
+    FrameStats stats = fakeFrameStats();
+    UiDriver d;
+    app::KeyQueue queue;
+};
+
+}  // namespace
+
+TEST_F(SlowFrameTest, TenTapsOfF1AllToggleHelp) {
+    for (int i = 0; i < 10; ++i) {
+        tap(kKeyF1);
+        EXPECT_EQ(d.drawn("help"), i % 2 == 0) << "tap " << i;
+    }
+}
+
+TEST_F(SlowFrameTest, WithoutTheQueueATapBetweenFramesIsLost) {
+    // What ImGui 1.86's GLFW callback did: both events land in KeysDown before the frame.
+    ImGui::GetIO().KeysDown[kKeyF1] = true;
+    ImGui::GetIO().KeysDown[kKeyF1] = false;
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("help"));
+}
+
+TEST_F(SlowFrameTest, TabSwapsTheViewsAndDoesNotMoveWidgetFocus) {
+    d.click(d.rect("light.elevation").center());  // the Settings panel has the focus
+    d.frame();
+    ASSERT_FALSE(ImGui::IsAnyItemActive());
+    queue.push(kKeyTab, true);
+    frame();
+    EXPECT_TRUE(d.last.swapSideView);
+    queue.push(kKeyTab, false);
+    frame();
+    frame();
+    EXPECT_FALSE(ImGui::IsAnyItemActive()) << "Tab moved the keyboard into a widget";
+    EXPECT_FALSE(ImGui::GetIO().WantTextInput);
+}

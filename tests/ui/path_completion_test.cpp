@@ -1,0 +1,26 @@
+// File > Open's completion (issue 13 #9): pure, over a scratch folder.
+#include "tests/ui/ui_test_data.h"
+#include "ui/path_completion.h"
+
+#include <gtest/gtest.h>
+
+using namespace st::ui;
+
+TEST(PathCompletionTest, FoldersAndJsonFilesThatContinueTheText) {
+    st::test::ScratchFolder scratch;
+    std::filesystem::create_directories(scratch.path / "scenes");
+    std::filesystem::create_directories(scratch.path / "scenarios");
+    std::filesystem::create_directories(scratch.path / ".hidden");
+    scratch.write("default.json", "{}");
+    scratch.write("scenes/fox.json", "{}");
+    scratch.write("scenes/fox.txt", "");
+    scratch.write("sun.json", "{}");
+    using V = std::vector<std::string>;
+    EXPECT_EQ(completePresetPath(scratch.path, "s"), (V{"scenarios/", "scenes/", "sun.json"}));
+    EXPECT_EQ(completePresetPath(scratch.path, "scenes/"), (V{"scenes/fox.json"}));
+    EXPECT_EQ(completePresetPath(scratch.path, ""), (V{"default.json", "scenarios/", "scenes/", "sun.json"}));
+    EXPECT_EQ(completePresetPath(scratch.path, (scratch.path / "scenes/f").string()), (V{(scratch.path / "scenes/fox.json").string()}));
+    EXPECT_TRUE(completePresetPath(scratch.path, "nope/").empty());
+    EXPECT_EQ(commonPrefix({"scenarios/", "scenes/"}), "scen");
+    EXPECT_EQ(commonPrefix({}), "");
+}
