@@ -30,16 +30,20 @@ public:
     void writeSceneShot(const std::filesystem::path& file) const;  // the main view, no panels
     void saveAs(const std::filesystem::path& file);  // output size = the scene view's size
     void printFrameTimes() const;                    // median CPU frame time and frame rate
+    // {"display": [w, h], "scene": [x, y, w, h], "windows": {"Settings": [x, y, w, h], ...}}, ImGui's
+    // display pixels from the top left, as the last frame placed them.
+    void writeLayoutReport(const std::filesystem::path& file) const;
     const EditorAccuracy& accuracy() const { return *accuracy_; }
     int exitCode() const { return exitCode_; }
 
 private:
     void loadScene(const std::string& spec, const SceneOptions& options);
     void handleInput();
+    void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
     bool renderViews(int width, int height);  // false: the settings failed, the last image stays
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
-    void present(int width, int height);
+    void present();
     ui::UiInputs uiInputs() const;
     void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
@@ -60,6 +64,9 @@ private:
     std::unique_ptr<EditorAccuracy> accuracy_;
     std::vector<std::filesystem::path> presetFiles_;
     int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
+    // The scene viewport the panels leave, framebuffer pixels from the bottom left (GL's origin).
+    int sceneX_ = 0, sceneY_ = 0, sceneWidth_ = 0, sceneHeight_ = 0;
+    ImVec2 scenePos_{0.0f, 0.0f}, sceneSize_{0.0f, 0.0f};  // the same in ImGui's display pixels
     FrameStats stats_;
     FlyState fly_;
     OrbitCamera orbit_;

@@ -27,6 +27,7 @@ public:
     void swapBuffers();
     void setTitle(const std::string& title);
     void framebufferSize(int& w, int& h) const;
+    const std::filesystem::path& configDir() const { return configDir_; }
 
 private:
     GLFWwindow* window_ = nullptr;

@@ -2,11 +2,17 @@
 // Read-only figures from the renderer's FrameStats, drawn next to the knobs that move them:
 // split distances, per-cascade light boxes, texel size, caster cost, memory and timing plots.
 #include "renderer/render/frame_stats.h"
+#include "renderer/settings/settings.h"
+#include "ui/advice.h"
 #include "ui/history.h"
+
+#include <vector>
 
 namespace st::ui {
 
-void drawCascadeFigures(const FrameStats* stats);  // under the cascade knobs
+void drawCascadeFigures(const Settings& s, const FrameStats* stats);  // under the cascade knobs, with advice
+// Advice (ui/advice.h) as wrapped lines in the advice colour; nothing when empty.
+void drawAdvice(const std::vector<Advice>& advice);
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats);
 
 // Adds this frame's timings to the plots (nothing for the GPU without stats).

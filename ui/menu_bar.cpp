@@ -26,6 +26,8 @@ void viewMenu(UiFrame& f) {
     if (ImGui::MenuItem("Frame scene", "F")) f.req.frameScene = true;
     if (ImGui::MenuItem("Swap side view", "Tab")) f.req.swapSideView = true;
     ImGui::Separator();
+    ImGui::MenuItem("Hide panels", "H", &f.state.prefs.panelsHidden);
+    recordItem(f.state.rects, "menu.hidePanels");
     ImGui::MenuItem("Shadow maps", nullptr, &f.state.showShadowMaps);
     ImGui::MenuItem("Side view", nullptr, &f.state.showSideView);
     ImGui::MenuItem("Accuracy", nullptr, &f.state.showAccuracy);

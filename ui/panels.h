@@ -14,5 +14,8 @@ void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with 
 void drawHelpWindow(UiFrame& f);      // help_window.cpp: shortcuts (F1)
 void drawAccuracyPanel(UiFrame& f);   // accuracy_panel.cpp: ground-truth figures, overlay toggle
 void drawConfirmDiscard(UiFrame& f);  // confirm_modal.cpp: "discard unsaved changes?"
+void drawSplitBar(UiFrame& f);        // split_bar.cpp: cascade ranges under the scene, draggable splits
+void drawStatusBar(UiFrame& f);
+void drawSceneLegends(UiFrame& f);    // legends.cpp: colour keys over the scene viewport's corner       // status_bar.cpp: frame rate, scene viewport size
 
 }  // namespace st::ui

@@ -6,6 +6,7 @@
 #include "ui/document.h"
 #include "ui/editor_ui.h"
 #include "ui/history.h"
+#include "ui/layout.h"
 #include "ui/undo_stack.h"
 
 #include <filesystem>
@@ -48,6 +49,9 @@ struct UiState {
     PendingDiscard pending;
     bool openConfirm = false;              // open the confirmation modal this frame
     bool quitConfirmed = false;            // draw() returns quit
+
+    LayoutPrefs prefs;                     // column widths, hidden panels: kept by the app across runs
+    Layout layout;                         // this frame's panel and scene rectangles (beginFrame)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     ItemRects rects;
