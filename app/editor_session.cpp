@@ -175,11 +175,29 @@ ui::UiInputs EditorSession::uiInputs() const {
     in.presetFiles = presetFiles_;
     in.statusLine = status_;
     in.accuracy = accuracy_->view();
+    in.probe = probeView_;
     return in;
+}
+
+// The pixel the panels asked for, from the frame just rendered (the main view only).
+void EditorSession::updateProbe(const ui::UiRequests& r, bool rendered) {
+    probeView_ = {};
+    if (!r.probeWanted || !rendered || swapped_) return;
+    Settings s = valid_;
+    s.output.width = sceneWidth_;
+    s.output.height = sceneHeight_;
+    probe_.update(true, *renderer_, s);
+    std::vector<float> texelWorld;
+    for (const CascadeStats& c : stats_.cascades) texelWorld.push_back(c.texelWorldSize);
+    probeView_ = readProbe(*probe_.samples(), int(r.probePixel.x), int(r.probePixel.y), s, texelWorld, accuracy_->classes());
 }
 
 void EditorSession::frame(const fs::path* screenshot) {
     auto t0 = std::chrono::steady_clock::now();
+    if (opt_.hover.size() == 2) {  // scripted: the pointer rests there, as a user's would
+        if (frameMs_.empty()) glfwFocusWindow(window_.handle());
+        glfwSetCursorPos(window_.handle(), opt_.hover[0], opt_.hover[1]);
+    }
     window_.beginFrame();
     if (window_.shouldClose()) {  // the close button asks the panels first (unsaved changes)
         window_.cancelClose();
@@ -193,6 +211,7 @@ void EditorSession::frame(const fs::path* screenshot) {
     if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
         const bool rendered = renderViews(sceneWidth_, sceneHeight_);
         updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
+        updateProbe(requests, rendered);
         present();
     }
     window_.endFrame();

@@ -5,6 +5,7 @@
 #include "app/editor_app.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
+#include "app/scene_probe.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/shadow_map_view.h"
@@ -44,6 +45,7 @@ private:
     bool renderViews(int width, int height);  // false: the settings failed, the last image stays
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
     void present();
+    void updateProbe(const ui::UiRequests& r, bool rendered);
     ui::UiInputs uiInputs() const;
     void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
@@ -62,6 +64,8 @@ private:
     std::unique_ptr<ShadowMapView> shadowTiles_;
     std::unique_ptr<ui::EditorUi> ui_;
     std::unique_ptr<EditorAccuracy> accuracy_;
+    SceneProbe probe_;
+    ui::ProbeView probeView_;  // shown by the next draw()
     std::vector<std::filesystem::path> presetFiles_;
     int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
     // The scene viewport the panels leave, framebuffer pixels from the bottom left (GL's origin).

@@ -49,6 +49,7 @@ void drawPanels(UiFrame& f) {
         drawSplitBar(f);
     }
     drawSceneLegends(f);
+    drawProbe(f);
     drawStatusBar(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);

@@ -20,6 +20,7 @@
 #include "ui/accuracy_view.h"
 #include "ui/item_rects.h"
 #include "ui/layout.h"
+#include "ui/probe.h"
 
 #include <imgui.h>
 
@@ -44,6 +45,7 @@ struct UiInputs {
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
     AccuracyView accuracy;                   // the background ground truth's state and figures
+    ProbeView probe;                         // the frame at the pixel the last draw() asked for
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -64,6 +66,8 @@ struct UiRequests {
     float sideViewZoom = 0.0f;               // mouse wheel over the side view
     ImVec2 scenePos{0.0f, 0.0f};             // the scene viewport the panels leave free, in display
     ImVec2 sceneSize{0.0f, 0.0f};            // pixels from the top left: render the scene there only
+    bool probeWanted = false;                // the mouse rests over the scene: sample probePixel
+    ImVec2 probePixel{0.0f, 0.0f};           // scene pixel from the viewport's top left
     bool accuracyWanted = false;             // the Accuracy panel is open: compute its figures
     bool errorOverlay = false;               // ... and its error overlay is switched on: pass the
                                              // overlay to drawErrorOverlay() when it is current
