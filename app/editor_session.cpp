@@ -140,7 +140,7 @@ bool EditorSession::renderViews(int width, int height) {
         if (swapped_) renderer_->renderMainView(valid_, pip_);
         else renderer_->renderSideView(valid_, orbit_, pip_);
     }
-    shadowTiles_->update(renderer_->shadowMaps(), renderer_->plan(), scene_->wsBounds, 256);
+    shadowTiles_->update(renderer_->shadowMaps(), 256);
     return true;
 }
 

@@ -14,7 +14,7 @@ struct Shortcut {
     const char* action;
 };
 
-constexpr std::array<Shortcut, 11> kShortcuts{{
+constexpr std::array<Shortcut, 13> kShortcuts{{
     {"Right mouse + W A S D", "fly the camera"},
     {"Right mouse + Q / E", "fly down / up"},
     {"Mouse wheel", "fly speed"},
@@ -26,6 +26,8 @@ constexpr std::array<Shortcut, 11> kShortcuts{{
     {"Ctrl+Shift+Z", "redo"},
     {"Ctrl+S", "save the preset"},
     {"F1", "show or hide this help"},
+    {"H", "hide or show every panel (the scene fills the window)"},
+    {"Rest the mouse on the scene", "probe: cascade, texel, shadow, bias, truth"},
 }};
 
 void drawTable() {
