@@ -72,7 +72,7 @@ void figures(UiFrame& f) {
     ImGui::Text("Edge band %s, gross %zu px; filtered error %.4f", percent(c.share(c.edge())).c_str(), c.gross(),
                 c.filteredError);
     recordItem(f.state.rects, "accuracy.figures");
-    drawAdvice(adviseFromAccuracy(f.s, a));
+    drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
     cascadeTable(f);
 }
 

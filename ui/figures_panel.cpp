@@ -73,16 +73,17 @@ void plot(const char* label, const History& history) {
 
 }  // namespace
 
-void drawAdvice(const std::vector<Advice>& advice) {
+void drawAdvice(const std::vector<Advice>& advice, ItemRects& rects) {
     const ImVec4 colour{1.0f, 0.8f, 0.35f, 1.0f};
     for (const Advice& a : advice) {
         ImGui::PushStyleColor(ImGuiCol_Text, colour);
         ImGui::TextWrapped("Advice: %s", a.text.c_str());
         ImGui::PopStyleColor();
+        recordItem(rects, "advice." + a.rule);
     }
 }
 
-void drawCascadeFigures(const Settings& s, const FrameStats* stats) {
+void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects) {
     ImGui::Separator();
     if (!stats) {
         ImGui::TextDisabled("No frame rendered yet: figures appear after the first frame.");
@@ -93,7 +94,7 @@ void drawCascadeFigures(const Settings& s, const FrameStats* stats) {
                 stats->sceneTriangles);
     geometryTable(*stats);
     costTable(*stats);
-    drawAdvice(adviseFromFigures(s, *stats));
+    drawAdvice(adviseFromFigures(s, *stats), rects);
 }
 
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats) {

@@ -15,6 +15,7 @@ namespace {
 constexpr float kMinLeft = 260.0f, kMaxLeftShare = 0.34f;
 constexpr float kMinRight = 200.0f, kMaxRightShare = 0.26f;
 constexpr float kMinBottom = 90.0f, kMaxBottomShare = 0.4f;
+constexpr float kMinSceneShare = 0.34f;
 
 Rect rect(float x0, float y0, float x1, float y1) { return {{x0, y0}, {x1, y1}}; }
 
@@ -85,8 +86,15 @@ Layout computeLayout(ImVec2 origin, ImVec2 size, const LayoutMetrics& m, const L
         l.scene = rect(x0, top, x1, bottom);
         return l;
     }
-    const float left = clampTo(prefs.leftWidth, kMinLeft, size.x * kMaxLeftShare);
-    const float right = clampTo(prefs.rightWidth, kMinRight, size.x * kMaxRightShare);
+    float left = clampTo(prefs.leftWidth, kMinLeft, size.x * kMaxLeftShare);
+    float right = clampTo(prefs.rightWidth, kMinRight, size.x * kMaxRightShare);
+    // A window below the supported 1000 px: the columns shrink together so the scene keeps a
+    // third of the width rather than vanishing under them.
+    if (const float room = size.x * (1.0f - kMinSceneShare); left + right > room) {
+        const float scale = room / (left + right);
+        left *= scale;
+        right *= scale;
+    }
     const float cx0 = x0 + left, cx1 = x1 - right;
     l.settings = rect(x0, top, cx0, bottom);
     stackRight(l, cx1, x1, top, bottom, shown);

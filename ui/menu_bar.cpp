@@ -22,7 +22,9 @@ void editMenu(UiFrame& f) {
 }
 
 void viewMenu(UiFrame& f) {
-    if (!ImGui::BeginMenu("View")) return;
+    const bool open = ImGui::BeginMenu("View");
+    recordItem(f.state.rects, "menu.view");
+    if (!open) return;
     if (ImGui::MenuItem("Frame scene", "F")) f.req.frameScene = true;
     if (ImGui::MenuItem("Swap side view", "Tab")) f.req.swapSideView = true;
     ImGui::Separator();

@@ -79,7 +79,7 @@ void drawSunAnimation(UiFrame& f) {
 // What a group shows after its fields: the sun toggle, the cascade figures.
 void drawGroupExtras(UiFrame& f, const std::string& key) {
     if (key == "light") drawSunAnimation(f);
-    if (key == "cascades") drawCascadeFigures(f.s, f.in.stats);
+    if (key == "cascades") drawCascadeFigures(f.s, f.in.stats, f.state.rects);
 }
 
 // The groups an artist tunes all day start open; output, measurement and new groups start closed.

@@ -72,8 +72,10 @@ TEST_P(EditorLayoutAtSize, SceneViewportAndPanelsTileTheWindow) {
         st::savePresetAtomic(s, preset);
         const fs::path shot = fs::path(ST_ARTIFACT_DIR) / ("editor-layout-" + std::to_string(c.w) + "x" + std::to_string(c.h) + ".png");
         fs::remove(dir / "shadowtune" / "layout.json");
-        // With the Accuracy panel's figures in, so the screenshot shows its table too.
-        ASSERT_EQ(run(c.w, c.h, preset, shot, "--frames 3 --wait-accuracy"), 0) << "editor failed, see " << (dir / "log.txt");
+        // With the Accuracy panel's figures in and the pointer resting on the ground in the
+        // middle of the scene, so the screenshot shows the table and the probe too.
+        const std::string hover = " --hover " + std::to_string(c.w / 2) + "," + std::to_string(c.h * 35 / 100);
+        ASSERT_EQ(run(c.w, c.h, preset, shot, "--frames 3 --wait-accuracy" + hover), 0) << "editor failed, see " << (dir / "log.txt");
         const nlohmann::json report = readJson(dir / "layout.json");
         EXPECT_EQ(report["display"][0].get<float>(), float(c.w));
         EXPECT_EQ(report["display"][1].get<float>(), float(c.h));

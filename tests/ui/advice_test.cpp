@@ -5,6 +5,8 @@
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings_json.h"
+#include "tests/ui/ui_driver.h"
+#include "tests/ui/ui_test_data.h"
 #include "ui/advice.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +75,24 @@ TEST(AdviceTest, DefaultPresetGetsNoTexelAdvice) {
     const Planned p = plannedFrame("default.json");
     for (const CascadeStats& c : p.stats.cascades) EXPECT_LE(c.texelWorldSize, ui::kCoarseTexelMetres);
     EXPECT_TRUE(ui::adviseFromFigures(p.s, p.stats).empty());
+}
+
+TEST(AdviceTest, PanelsShowTheAdviceUnderTheirFigures) {
+    test::UiDriver d;
+    FrameStats stats = test::fakeFrameStats();
+    d.in.stats = &stats;
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("advice.coarse-texel"));
+    stats.cascades[3].texelWorldSize = 1.7f;  // truck_town's far cascade
+    d.in.accuracy.state = ui::AccuracyView::State::Done;
+    d.in.accuracy.all.receivers = 1000;
+    d.in.accuracy.all.falseLightGross = 40;
+    d.frames(2);
+    EXPECT_TRUE(d.drawn("advice.coarse-texel"));
+    EXPECT_TRUE(d.drawn("advice.peter-panning"));
+    const ui::ItemRect accuracy = d.rect("window.Accuracy");
+    EXPECT_GE(d.rect("advice.peter-panning").min.y, accuracy.min.y) << "in the Accuracy panel";
+    EXPECT_LE(d.rect("advice.peter-panning").min.x, accuracy.max.x);
 }
 
 TEST(AdviceTest, AccuracyRulesWaitForFigures) {

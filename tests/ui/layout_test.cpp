@@ -77,6 +77,16 @@ TEST(LayoutTest, ComputedRectanglesTileTheWindowAtEverySize) {
     }
 }
 
+TEST(LayoutTest, BelowTheSupportedSizeTheSceneStillKeepsAThird) {
+    for (const ImVec2 size : {ImVec2{640, 480}, ImVec2{320, 240}}) {
+        const ui::Layout l = ui::computeLayout({0, 0}, size, {}, {}, {});
+        EXPECT_GE(l.scene.width(), size.x / 3.0f) << size.x;
+        EXPECT_FALSE(l.settings.overlaps(l.presets));
+        EXPECT_FALSE(l.settings.overlaps(l.scene));
+        EXPECT_LE(l.presets.max.x, size.x);
+    }
+}
+
 TEST(LayoutTest, ClosedPanelsGiveTheirSpaceAway) {
     const ui::Layout all = ui::computeLayout({0, 0}, {1280, 720}, {}, {}, {});
     const ui::Layout some = ui::computeLayout({0, 0}, {1280, 720}, {}, {}, {.shadowMaps = false, .sideView = true, .accuracy = false});
@@ -104,6 +114,17 @@ TEST(LayoutTest, HKeyHidesEveryPanelAndTheSceneFillsTheWindow) {
     d.pressKey(kKeyH);
     EXPECT_TRUE(d.drawn("window.Settings"));
     EXPECT_FLOAT_EQ(sceneOf(d.last).width(), docked.width());
+}
+
+TEST(LayoutTest, ViewMenuItemHidesThePanelsToo) {
+    UiDriver d({1280.0f, 720.0f});
+    d.frames(2);
+    d.click("menu.view");
+    d.click("menu.hidePanels");
+    EXPECT_TRUE(d.ui().layoutPrefs().panelsHidden);
+    d.frame();
+    EXPECT_FALSE(d.drawn("window.Settings"));
+    EXPECT_FLOAT_EQ(d.last.sceneSize.x, 1280.0f);
 }
 
 TEST(LayoutTest, DraggedColumnWidthIsKeptInThePrefsAndMovesTheScene) {
