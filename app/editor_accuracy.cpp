@@ -93,6 +93,7 @@ void EditorAccuracy::collect() {
     for (const metrics::ErrorCounts& c : a.report.cascades) view_.cascades.push_back(toUi(c));
     view_.beyond = toUi(a.report.beyond);
     overlay_.upload(a.overlay.width, a.overlay.height, a.overlay.pixels);
+    classes_ = a.report.classes;
     schedule_.finished(true);
 }
 

@@ -33,6 +33,8 @@ public:
     bool finished() const;   // the last job ended (done or failed): scripted runs wait for it
     bool done() const { return schedule_.state() == AccuracySchedule::State::Done; }
     std::string summary() const;  // one line: state and the frame's figures
+    // Per pixel of the frame measured (the hover probe's truth); nullptr unless done.
+    const std::vector<metrics::PixelClass>* classes() const { return done() ? &classes_ : nullptr; }
 
 private:
     void start(Renderer& r, const Settings& s, const std::shared_ptr<const Scene>& scene);
@@ -46,6 +48,7 @@ private:
     bool wanted_ = false;
     double readBackSeconds_ = 0.0;       // of the job in flight
     ui::AccuracyView view_;              // figures (Done) or error (Failed) of the last job
+    std::vector<metrics::PixelClass> classes_;  // of the last job that was done
 };
 
 }  // namespace st::app

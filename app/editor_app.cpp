@@ -31,23 +31,37 @@ void runFrames(EditorSession& session, const EditorOptions& opt) {
     }
 }
 
+// One run from the window opening to the last frame's outputs; `closing` is set when the run
+// decides to end, before the session and the window are torn down.
+int runSession(const EditorOptions& opt, std::chrono::steady_clock::time_point& closing) {
+    EditorWindow window("shadowtune", opt.debugContext);
+    EditorSession session(window, opt);
+    runFrames(session, opt);
+    if (opt.waitAccuracy) std::printf("%s\n", session.accuracy().summary().c_str());
+    if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
+    if (opt.saveAs) session.saveAs(*opt.saveAs);
+    if (opt.layoutReport) session.writeLayoutReport(*opt.layoutReport);
+    session.printFrameTimes();
+    closing = std::chrono::steady_clock::now();
+    if (opt.debugContext && gpu::seriousDebugMessageCount() > 0) {
+        std::fprintf(stderr, "error: GL debug output reported %d errors (see above)\n", gpu::seriousDebugMessageCount());
+        return 3;
+    }
+    if (opt.waitAccuracy && !session.accuracy().done()) return 4;  // the summary says why
+    return session.exitCode();
+}
+
 }  // namespace
 
 int runEditor(const EditorOptions& opt) {
     try {
-        EditorWindow window("shadowtune", opt.debugContext);
-        EditorSession session(window, opt);
-        runFrames(session, opt);
-        if (opt.waitAccuracy) std::printf("%s\n", session.accuracy().summary().c_str());
-        if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
-        if (opt.saveAs) session.saveAs(*opt.saveAs);
-        session.printFrameTimes();
-        if (opt.debugContext && gpu::seriousDebugMessageCount() > 0) {
-            std::fprintf(stderr, "error: GL debug output reported %d errors (see above)\n", gpu::seriousDebugMessageCount());
-            return 3;
-        }
-        if (opt.waitAccuracy && !session.accuracy().done()) return 4;  // the summary says why
-        return session.exitCode();
+        std::chrono::steady_clock::time_point closing;
+        const int code = runSession(opt, closing);
+        // Closing = stopping the Accuracy job, saving the window and layout files, GL and GLFW
+        // teardown: the user waits for it after pressing the close button.
+        std::printf("closed in %.0f ms\n",
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - closing).count());
+        return code;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return 2;

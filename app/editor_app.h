@@ -1,6 +1,7 @@
 #pragma once
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace st::app {
 
@@ -11,6 +12,8 @@ struct EditorOptions {
     std::optional<std::filesystem::path> screenshot;  // written after the last frame
     std::optional<std::filesystem::path> sceneShot;   // the scene view alone, after the last frame
     std::optional<std::filesystem::path> saveAs;      // "Save As" after the last frame (scripted runs)
+    std::vector<int> hover;  // {x, y}: the mouse is put there every frame (scripted probe screenshots)
+    std::optional<std::filesystem::path> layoutReport;  // JSON: the scene viewport and every panel's rectangle
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures
     bool debugContext = false;
 };

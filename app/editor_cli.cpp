@@ -16,6 +16,10 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     editor->add_option("--screenshot", opt->screenshot, "Write the window to this PNG after the last frame");
     editor->add_option("--scene-screenshot", opt->sceneShot, "Write the scene view alone (no panels) after the last frame");
     editor->add_option("--save-as", opt->saveAs, "Save the settings as a preset after the last frame");
+    editor->add_option("--hover", opt->hover, "X,Y: keep the mouse at this window position (probe screenshots)")
+        ->expected(2)->delimiter(',');
+    editor->add_option("--layout-report", opt->layoutReport,
+                       "Write the scene viewport's and the panels' rectangles (JSON) after the last frame");
     editor->add_flag("--wait-accuracy", opt->waitAccuracy,
                      "With --frames: keep drawing until the Accuracy panel shows its figures, then print them");
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");

@@ -1,6 +1,7 @@
 #include "app/editor_session.h"
 
 #include "app/preset_list.h"
+#include "app/layout_file.h"
 #include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/preset_paths.h"
@@ -10,9 +11,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace st::app {
@@ -27,6 +30,7 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : w
     shadowTiles_ = std::make_unique<ShadowMapView>();
     ui_ = std::make_unique<ui::EditorUi>(opt.presetDir);
     ui_->setDocument(settings_, presetPath_);
+    ui_->setLayoutPrefs(loadLayoutPrefs(window_.configDir() / "layout.json"));
     accuracy_ = std::make_unique<EditorAccuracy>();
     scanPresets();
     lastTime_ = glfwGetTime();
@@ -36,7 +40,7 @@ void EditorSession::scanPresets() {
     presetFiles_ = listPresetFiles(opt_.presetDir);
 }
 
-EditorSession::~EditorSession() = default;
+EditorSession::~EditorSession() { saveLayoutPrefs(window_.configDir() / "layout.json", ui_->layoutPrefs()); }
 
 fs::path EditorSession::sceneBase() const { return presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path(); }
 
@@ -121,10 +125,26 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     orbit_.yawDeg -= r.sideViewOrbit.x * 0.3f;
     orbit_.pitchDeg = std::clamp(orbit_.pitchDeg + r.sideViewOrbit.y * 0.3f, -89.0f, 89.0f);
     orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, r.sideViewZoom), 0.05f, 20.0f);
+    placeScene(r);
     pipWidth_ = int(r.sideViewSize.x);
     pipHeight_ = int(r.sideViewSize.y);
     if (r.settingsValid) valid_ = settings_;
     window_.setTitle(ui_->windowTitle());
+}
+
+// The viewport the panels leave, in framebuffer pixels (HiDPI scale) with GL's bottom-left origin.
+void EditorSession::placeScene(const ui::UiRequests& r) {
+    const ImGuiIO& io = ImGui::GetIO();
+    int fbWidth = 0, fbHeight = 0;
+    window_.framebufferSize(fbWidth, fbHeight);
+    const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+    scenePos_ = r.scenePos;
+    sceneSize_ = r.sceneSize;
+    sceneX_ = std::clamp(int(std::lround(r.scenePos.x * sx)), 0, fbWidth);
+    sceneWidth_ = std::clamp(int(std::lround(r.sceneSize.x * sx)), 0, fbWidth - sceneX_);
+    const int top = std::clamp(int(std::lround(r.scenePos.y * sy)), 0, fbHeight);
+    sceneHeight_ = std::clamp(int(std::lround(r.sceneSize.y * sy)), 0, fbHeight - top);
+    sceneY_ = fbHeight - top - sceneHeight_;
 }
 
 bool EditorSession::renderViews(int width, int height) {
@@ -149,7 +169,7 @@ bool EditorSession::renderViews(int width, int height) {
         if (swapped_) renderer_->renderMainView(valid_, pip_);
         else renderer_->renderSideView(valid_, orbit_, pip_);
     }
-    shadowTiles_->update(renderer_->shadowMaps(), renderer_->plan(), scene_->wsBounds, 256);
+    shadowTiles_->update(renderer_->shadowMaps(), 256);
     return true;
 }
 
@@ -161,12 +181,16 @@ void EditorSession::updateAccuracy(const ui::UiRequests& r, bool rendered, int w
     s.output.height = height;
     accuracy_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, s, scene_);
     if (r.errorOverlay && !swapped_ && accuracy_->overlay())
-        ui::drawErrorOverlay(reinterpret_cast<ImTextureID>(std::uintptr_t(accuracy_->overlay())));
+        ui::drawErrorOverlay(reinterpret_cast<ImTextureID>(std::uintptr_t(accuracy_->overlay())), scenePos_, sceneSize_);
 }
 
-void EditorSession::present(int width, int height) {
-    glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, width, height, 0, 0, width, height,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+// The scene into its viewport; the rest of the window is the panels' (cleared, so nothing of an
+// earlier, larger viewport shows between them).
+void EditorSession::present() {
+    const GLfloat background[4] = {0.06f, 0.06f, 0.06f, 1.0f};
+    glClearNamedFramebufferfv(0, GL_COLOR, 0, background);
+    glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, sceneWidth_, sceneHeight_, sceneX_, sceneY_,
+                           sceneX_ + sceneWidth_, sceneY_ + sceneHeight_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 ui::UiInputs EditorSession::uiInputs() {
@@ -183,11 +207,29 @@ ui::UiInputs EditorSession::uiInputs() {
     in.checkScene = [this](const std::string& spec, bool ground, const fs::path& baseDir) {
         return checkScene(spec, ground, baseDir);
     };
+    in.probe = probeView_;
     return in;
+}
+
+// The pixel the panels asked for, from the frame just rendered (the main view only).
+void EditorSession::updateProbe(const ui::UiRequests& r, bool rendered) {
+    probeView_ = {};
+    if (!r.probeWanted || !rendered || swapped_) return;
+    Settings s = valid_;
+    s.output.width = sceneWidth_;
+    s.output.height = sceneHeight_;
+    probe_.update(true, *renderer_, s);
+    std::vector<float> texelWorld;
+    for (const CascadeStats& c : stats_.cascades) texelWorld.push_back(c.texelWorldSize);
+    probeView_ = readProbe(*probe_.samples(), int(r.probePixel.x), int(r.probePixel.y), s, texelWorld, accuracy_->classes());
 }
 
 void EditorSession::frame(const fs::path* screenshot) {
     auto t0 = std::chrono::steady_clock::now();
+    if (opt_.hover.size() == 2) {  // scripted: the pointer rests there, as a user's would
+        if (frameMs_.empty()) glfwFocusWindow(window_.handle());
+        glfwSetCursorPos(window_.handle(), opt_.hover[0], opt_.hover[1]);
+    }
     window_.beginFrame();
     if (window_.shouldClose()) {  // the close button asks the panels first (unsaved changes)
         window_.cancelClose();
@@ -198,14 +240,15 @@ void EditorSession::frame(const fs::path* screenshot) {
     applyRequests(requests);
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
-    int width = 0, height = 0;
-    window_.framebufferSize(width, height);
-    if (width >= 16 && height >= 16) {
-        const bool rendered = renderViews(width, height);
-        updateAccuracy(requests, rendered, width, height);
-        present(width, height);
+    if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
+        const bool rendered = renderViews(sceneWidth_, sceneHeight_);
+        updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
+        updateProbe(requests, rendered);
+        present();
     }
     window_.endFrame();
+    int width = 0, height = 0;
+    window_.framebufferSize(width, height);
     if (screenshot) writeScreenshot(*screenshot, width, height);
     window_.swapBuffers();
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -224,6 +267,17 @@ void EditorSession::saveAs(const fs::path& file) {
     savePresetRebased(s, sceneBase(), file);  // relative scene paths follow the file (issue 13 #1)
     presetPath_ = file;
     std::printf("saved %s\n", file.string().c_str());
+}
+
+void EditorSession::writeLayoutReport(const fs::path& file) const {
+    auto box = [](ImVec2 pos, ImVec2 size) { return nlohmann::json::array({pos.x, pos.y, size.x, size.y}); };
+    const ImGuiIO& io = ImGui::GetIO();
+    nlohmann::json j{{"display", {io.DisplaySize.x, io.DisplaySize.y}}, {"scene", box(scenePos_, sceneSize_)}};
+    j["windows"] = nlohmann::json::object();
+    for (const auto& [key, r] : ui_->itemRects())
+        if (key.rfind("window.", 0) == 0) j["windows"][key.substr(7)] = box(r.min, {r.max.x - r.min.x, r.max.y - r.min.y});
+    writeTextAtomic(file, j.dump(2) + "\n");
+    std::printf("wrote %s\n", file.string().c_str());
 }
 
 void EditorSession::printFrameTimes() const {

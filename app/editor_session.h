@@ -6,6 +6,7 @@
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
 #include "app/view_actions.h"
+#include "app/scene_probe.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/shadow_map_view.h"
@@ -31,6 +32,9 @@ public:
     void writeSceneShot(const std::filesystem::path& file) const;  // the main view, no panels
     void saveAs(const std::filesystem::path& file);  // output size = the scene view's size
     void printFrameTimes() const;                    // median CPU frame time and frame rate
+    // {"display": [w, h], "scene": [x, y, w, h], "windows": {"Settings": [x, y, w, h], ...}}, ImGui's
+    // display pixels from the top left, as the last frame placed them.
+    void writeLayoutReport(const std::filesystem::path& file) const;
     const EditorAccuracy& accuracy() const { return *accuracy_; }
     int exitCode() const { return exitCode_; }
 
@@ -39,10 +43,12 @@ private:
     std::string checkScene(const std::string& spec, bool ground, const std::filesystem::path& baseDir);
     std::filesystem::path sceneBase() const;  // what relative scene paths are relative to
     void handleInput();
+    void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
     bool renderViews(int width, int height);  // false: the settings failed, the last image stays
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
-    void present(int width, int height);
+    void present();
+    void updateProbe(const ui::UiRequests& r, bool rendered);
     ui::UiInputs uiInputs();
     void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
@@ -64,8 +70,13 @@ private:
     std::unique_ptr<ShadowMapView> shadowTiles_;
     std::unique_ptr<ui::EditorUi> ui_;
     std::unique_ptr<EditorAccuracy> accuracy_;
+    SceneProbe probe_;
+    ui::ProbeView probeView_;  // shown by the next draw()
     std::vector<std::filesystem::path> presetFiles_;
     int pipWidth_ = 0, pipHeight_ = 0;  // the size the panels show the picture-in-picture at
+    // The scene viewport the panels leave, framebuffer pixels from the bottom left (GL's origin).
+    int sceneX_ = 0, sceneY_ = 0, sceneWidth_ = 0, sceneHeight_ = 0;
+    ImVec2 scenePos_{0.0f, 0.0f}, sceneSize_{0.0f, 0.0f};  // the same in ImGui's display pixels
     FrameStats stats_;
     FlyState fly_;
     CameraGesture cameraGesture_;

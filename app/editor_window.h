@@ -29,6 +29,7 @@ public:
     void swapBuffers();
     void setTitle(const std::string& title);
     void framebufferSize(int& w, int& h) const;
+    const std::filesystem::path& configDir() const { return configDir_; }
 
 private:
     static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);

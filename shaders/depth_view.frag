@@ -1,12 +1,17 @@
 #version 450 core
 #include "interface.h"
-// One shadow-map layer made visible: depth remapped from [depthLo, depthHi] (where the scene lies
-// in the light box) to a grey ramp, near = bright; texels never written (depth 1) in dark blue.
+// One shadow-map layer made visible: depth remapped from [depthLo, depthHi] (the range the tile's
+// own written texels span) to a grey ramp, near = bright; texels never written (depth 1) in dark
+// blue. depthHi < 0: the raw stored depth in red, for ShadowMapView to find that range.
 layout(binding = ST_BINDING_DEPTH_VIEW) uniform sampler2DArray uDepth;
 in vec2 vUv;
 out vec4 oColor;
 void main() {
     float d = texture(uDepth, vec3(vUv, float(layer))).r;
+    if (depthHi < 0.0) {
+        oColor = vec4(d, 0.0, 0.0, 1.0);
+        return;
+    }
     if (d >= 1.0) {
         oColor = vec4(0.05, 0.07, 0.2, 1.0);
         return;

@@ -1,6 +1,8 @@
 // The Accuracy panel: the ground truth of the frame on screen, computed by the app in the
 // background once the camera and settings are still, and the toggle of its error overlay.
+#include "ui/figures_panel.h"
 #include "ui/layout.h"
+#include "ui/legends.h"
 #include "ui/panels.h"
 
 #include <imgui.h>
@@ -27,9 +29,15 @@ void cell(const std::string& text) {
     ImGui::TextUnformatted(text.c_str());
 }
 
-void countsRow(const char* label, const AccuracyCounts& c) {
+// cascade < 0: the row is labelled `label`, else with the cascade's colour swatch.
+void countsRow(int cascade, const char* label, const AccuracyCounts& c) {
     ImGui::TableNextRow();
-    cell(label);
+    if (cascade >= 0) {
+        ImGui::TableNextColumn();
+        cascadeSwatch(cascade);
+    } else {
+        cell(label);
+    }
     cell(std::to_string(c.receivers));
     cell(percent(c.share(c.misclassified())));
     cell(percent(c.share(c.falseShadow())));
@@ -47,8 +55,8 @@ void cascadeTable(UiFrame& f) {
     for (const char* name : {"", "sun-facing px", "misclass.", "false shadow", "false light", "gross px", "filtered"})
         ImGui::TableSetupColumn(name);
     ImGui::TableHeadersRow();
-    for (std::size_t i = 0; i < a.cascades.size(); ++i) countsRow(("C" + std::to_string(i)).c_str(), a.cascades[i]);
-    if (a.beyond.receivers > 0) countsRow("beyond", a.beyond);
+    for (std::size_t i = 0; i < a.cascades.size(); ++i) countsRow(static_cast<int>(i), "", a.cascades[i]);
+    if (a.beyond.receivers > 0) countsRow(-1, "beyond", a.beyond);
     ImGui::EndTable();
     recordItem(f.state.rects, "accuracy.cascades");
 }
@@ -64,6 +72,7 @@ void figures(UiFrame& f) {
     ImGui::Text("Edge band %s, gross %zu px; filtered error %.4f", percent(c.share(c.edge())).c_str(), c.gross(),
                 c.filteredError);
     recordItem(f.state.rects, "accuracy.figures");
+    drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
     cascadeTable(f);
 }
 
@@ -117,8 +126,7 @@ void overlayToggle(UiFrame& f) {
 
 void drawAccuracyPanel(UiFrame& f) {
     if (!f.state.showAccuracy) return;
-    placeNextWindow(Panel::Accuracy);
-    if (ImGui::Begin("Accuracy", &f.state.showAccuracy)) {
+    if (beginDockedPanel(f, Panel::Accuracy, "Accuracy", &f.state.showAccuracy)) {
         stateLine(f);
         overlayToggle(f);
         if (f.in.accuracy.state == AccuracyView::State::Done) figures(f);
@@ -128,8 +136,12 @@ void drawAccuracyPanel(UiFrame& f) {
 
 void drawErrorOverlay(ImTextureID overlay) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const ImVec2 max{viewport->Pos.x + viewport->Size.x, viewport->Pos.y + viewport->Size.y};
-    ImGui::GetBackgroundDrawList()->AddImage(overlay, viewport->Pos, max);  // row 0 is the top: no flip
+    drawErrorOverlay(overlay, viewport->Pos, viewport->Size);
+}
+
+void drawErrorOverlay(ImTextureID overlay, ImVec2 pos, ImVec2 size) {
+    const ImVec2 max{pos.x + size.x, pos.y + size.y};
+    ImGui::GetBackgroundDrawList()->AddImage(overlay, pos, max);  // row 0 is the top: no flip
 }
 
 }  // namespace st::ui

@@ -28,13 +28,29 @@ void beginFrame(UiFrame& f) {
     if (f.state.saveAsText.empty()) f.state.saveAsText = (f.state.presetDir / "untitled.json").string();
 }
 
+// After the shortcuts, so H hides the panels in the frame it is pressed.
+void placePanels(UiFrame& f) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    f.state.layout = computeLayout(viewport->Pos, viewport->Size, currentLayoutMetrics(), f.state.prefs,
+                                   {f.state.showShadowMaps, f.state.showSideView, f.state.showAccuracy});
+}
+
 void drawPanels(UiFrame& f) {
+    placePanels(f);
     drawMenuBar(f);
-    drawSettingsPanel(f);
-    drawPresetsPanel(f);
-    drawShadowViewer(f);
-    drawSideView(f);
-    drawAccuracyPanel(f);
+    if (f.state.prefs.panelsHidden) {
+        f.state.issues = findIssues(f.s);  // what the Settings panel would have listed
+    } else {
+        drawSettingsPanel(f);
+        drawPresetsPanel(f);
+        drawShadowViewer(f);
+        drawSideView(f);
+        drawAccuracyPanel(f);
+        drawSplitBar(f);
+    }
+    drawSceneLegends(f);
+    drawProbe(f);
+    drawStatusBar(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
 }
@@ -43,6 +59,8 @@ void finishFrame(UiFrame& f, const Settings& atStart) {
     f.req.change = classifyChange(atStart, f.s);
     f.req.settingsValid = f.req.change == ChangeClass::None ? f.state.issues.empty() : validate(f.s).empty();
     f.req.quit = f.state.quitConfirmed;
+    f.req.scenePos = f.state.layout.scene.min;
+    f.req.sceneSize = {f.state.layout.scene.width(), f.state.layout.scene.height()};
     f.req.accuracyWanted = f.state.showAccuracy;
     f.req.errorOverlay = f.state.showAccuracy && f.state.errorOverlay;
     f.state.dirty = isDirty(f.state.doc, f.s);
@@ -108,5 +126,9 @@ const std::filesystem::path& EditorUi::presetFile() const { return state_->doc.f
 const std::vector<std::string>& EditorUi::errors() const { return state_->doc.errors; }
 
 const ItemRects& EditorUi::itemRects() const { return state_->rects; }
+
+const LayoutPrefs& EditorUi::layoutPrefs() const { return state_->prefs; }
+
+void EditorUi::setLayoutPrefs(const LayoutPrefs& prefs) { state_->prefs = prefs; }
 
 }  // namespace st::ui

@@ -19,6 +19,8 @@
 #include "renderer/settings/settings.h"
 #include "ui/accuracy_view.h"
 #include "ui/item_rects.h"
+#include "ui/layout.h"
+#include "ui/probe.h"
 
 #include <imgui.h>
 
@@ -48,6 +50,7 @@ struct UiInputs {
     // "" when it loads, else why not; the UI then leaves the settings as they are. Unset: every
     // scene is taken.
     std::function<std::string(const std::string& scene, bool ground, const std::filesystem::path& baseDir)> checkScene;
+    ProbeView probe;                         // the frame at the pixel the last draw() asked for
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -66,6 +69,10 @@ struct UiRequests {
     ImVec2 sideViewOrbit{0.0f, 0.0f};        // mouse movement dragged with the left/right button
     ImVec2 sideViewPan{0.0f, 0.0f};          // ... with the middle button
     float sideViewZoom = 0.0f;               // mouse wheel over the side view
+    ImVec2 scenePos{0.0f, 0.0f};             // the scene viewport the panels leave free, in display
+    ImVec2 sceneSize{0.0f, 0.0f};            // pixels from the top left: render the scene there only
+    bool probeWanted = false;                // the mouse rests over the scene: sample probePixel
+    ImVec2 probePixel{0.0f, 0.0f};           // scene pixel from the viewport's top left
     bool accuracyWanted = false;             // the Accuracy panel is open: compute its figures
     bool errorOverlay = false;               // ... and its error overlay is switched on: pass the
                                              // overlay to drawErrorOverlay() when it is current
@@ -79,6 +86,7 @@ struct ShortcutKeys {
     int frame = 70;   // F: frame the scene
     int help = 290;   // F1: help window
     int open = 79;    // Ctrl+O: File > Open
+    int hidePanels = 72;  // H: hide every panel, the scene fills the window
 };
 
 // Draws the Accuracy panel's error overlay (an RGBA texture, top row first, straight alpha) over
@@ -86,6 +94,8 @@ struct ShortcutKeys {
 // app knows the overlay describes the frame it is about to show: a frame that changed since the
 // figures were computed must not show them.
 void drawErrorOverlay(ImTextureID overlay);
+// ... over the scene viewport only (UiRequests::scenePos/sceneSize).
+void drawErrorOverlay(ImTextureID overlay, ImVec2 pos, ImVec2 size);
 
 class EditorUi {
 public:
@@ -120,6 +130,8 @@ public:
     const std::filesystem::path& presetFile() const;   // empty: untitled
     const std::vector<std::string>& errors() const;    // of the last failed load/save (shown in the UI)
     const ItemRects& itemRects() const;                // named widgets of the last draw() (tests)
+    const LayoutPrefs& layoutPrefs() const;            // column widths, hidden panels (the app saves them)
+    void setLayoutPrefs(const LayoutPrefs& prefs);
 
 private:
     std::unique_ptr<UiState> state_;

@@ -1,6 +1,7 @@
 #include "ui/figures_panel.h"
 
 #include "ui/field_rules.h"
+#include "ui/legends.h"
 
 #include <imgui.h>
 
@@ -19,7 +20,7 @@ std::string splitList(const FrameStats& stats) {
 void geometryRow(int index, const CascadeStats& c) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::Text("%d", index);
+    cascadeSwatch(index);
     ImGui::TableNextColumn();
     ImGui::Text("%s - %s", formatLength(c.vsNear).c_str(), formatLength(c.vsFar).c_str());
     ImGui::TableNextColumn();
@@ -33,7 +34,7 @@ void geometryRow(int index, const CascadeStats& c) {
 void costRow(int index, const CascadeStats& c) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::Text("%d", index);
+    cascadeSwatch(index);
     ImGui::TableNextColumn();
     ImGui::Text("%d", c.casterDraws);
     ImGui::TableNextColumn();
@@ -72,7 +73,17 @@ void plot(const char* label, const History& history) {
 
 }  // namespace
 
-void drawCascadeFigures(const FrameStats* stats) {
+void drawAdvice(const std::vector<Advice>& advice, ItemRects& rects) {
+    const ImVec4 colour{1.0f, 0.8f, 0.35f, 1.0f};
+    for (const Advice& a : advice) {
+        ImGui::PushStyleColor(ImGuiCol_Text, colour);
+        ImGui::TextWrapped("Advice: %s", a.text.c_str());
+        ImGui::PopStyleColor();
+        recordItem(rects, "advice." + a.rule);
+    }
+}
+
+void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects) {
     ImGui::Separator();
     if (!stats) {
         ImGui::TextDisabled("No frame rendered yet: figures appear after the first frame.");
@@ -83,6 +94,7 @@ void drawCascadeFigures(const FrameStats* stats) {
                 stats->sceneTriangles);
     geometryTable(*stats);
     costTable(*stats);
+    drawAdvice(adviseFromFigures(s, *stats), rects);
 }
 
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats) {

@@ -2,11 +2,18 @@
 // Read-only figures from the renderer's FrameStats, drawn next to the knobs that move them:
 // split distances, per-cascade light boxes, texel size, caster cost, memory and timing plots.
 #include "renderer/render/frame_stats.h"
+#include "renderer/settings/settings.h"
+#include "ui/advice.h"
 #include "ui/history.h"
+#include "ui/item_rects.h"
+
+#include <vector>
 
 namespace st::ui {
 
-void drawCascadeFigures(const FrameStats* stats);  // under the cascade knobs
+void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects);  // under the cascade knobs, with advice
+// Advice (ui/advice.h) as wrapped lines in the advice colour, recorded as "advice.<rule>".
+void drawAdvice(const std::vector<Advice>& advice, ItemRects& rects);
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats);
 
 // Adds this frame's timings to the plots (nothing for the GPU without stats).

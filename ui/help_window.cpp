@@ -14,7 +14,7 @@ struct Shortcut {
     const char* action;
 };
 
-constexpr std::array<Shortcut, 12> kShortcuts{{
+constexpr std::array<Shortcut, 14> kShortcuts{{
     {"Right mouse + W A S D", "fly the camera"},
     {"Right mouse + Q / E", "fly down / up"},
     {"Mouse wheel", "fly speed"},
@@ -27,6 +27,8 @@ constexpr std::array<Shortcut, 12> kShortcuts{{
     {"Ctrl+S", "save the preset"},
     {"Ctrl+O", "open a preset by path"},
     {"F1", "show or hide this help"},
+    {"H", "hide or show every panel (the scene fills the window)"},
+    {"Rest the mouse on the scene", "probe: cascade, texel, shadow, bias, truth"},
 }};
 
 void drawTable() {

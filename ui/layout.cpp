@@ -1,74 +1,148 @@
 #include "ui/layout.h"
 
+#include "ui/ui_state.h"
+
 #include <imgui.h>
 
 #include <algorithm>
+#include <string>
 
 namespace st::ui {
 namespace {
 
-constexpr float kLeftWidth = 430.0f;   // Settings: labels, widgets and the per-cascade tables
-constexpr float kRightWidth = 330.0f;  // Presets, Shadow maps, Side view stacked on the right
+// Column limits: at 1000 px the scene keeps about 40 % of the width; below the minimum widths
+// the columns' widgets stop being usable, so the scene shrinks instead.
+constexpr float kMinLeft = 260.0f, kMaxLeftShare = 0.34f;
+constexpr float kMinRight = 200.0f, kMaxRightShare = 0.26f;
+constexpr float kMinBottom = 90.0f, kMaxBottomShare = 0.4f;
+constexpr float kMinSceneShare = 0.34f;
 
-struct Area {
-    ImVec2 pos;
-    ImVec2 size;
-};
+Rect rect(float x0, float y0, float x1, float y1) { return {{x0, y0}, {x1, y1}}; }
 
-// The display below the main menu bar. Computed from the frame height, not the viewport's work
-// area, which leaves out the menu bar only from the frame after the bar was first drawn.
-Area workArea() {
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const float menuBar = ImGui::GetFrameHeight();
-    return {{viewport->Pos.x, viewport->Pos.y + menuBar}, {viewport->Size.x, viewport->Size.y - menuBar}};
-}
+float clampTo(float value, float lo, float hi) { return std::clamp(value, lo, std::max(lo, hi)); }
 
-// Right column: presets 34 %, shadow maps 33 %, side view the rest of the height.
-Area rightSlot(float top, float height) {
-    const Area work = workArea();
-    const float width = std::min(kRightWidth, work.size.x * 0.4f);
-    return {{work.pos.x + work.size.x - width, work.pos.y + work.size.y * top},
-            {width, work.size.y * height}};
-}
-
-// Accuracy: along the bottom of the scene view, between the side columns, so most of the view
-// (and the error overlay on it) stays visible.
-Area bottomMiddle(float height) {
-    const Area work = workArea();
-    const float left = std::min(kLeftWidth, work.size.x * 0.5f);
-    const float right = std::min(kRightWidth, work.size.x * 0.4f);
-    const float width = std::max(work.size.x - left - right, 240.0f);
-    return {{work.pos.x + left, work.pos.y + work.size.y - height}, {width, height}};
-}
-
-Area centred(float width, float height) {
-    const Area work = workArea();
-    return {{work.pos.x + (work.size.x - width) * 0.5f, work.pos.y + (work.size.y - height) * 0.5f},
-            {width, height}};
-}
-
-Area areaOf(Panel panel) {
-    const Area work = workArea();
-    switch (panel) {
-        case Panel::Settings: return {work.pos, {std::min(kLeftWidth, work.size.x * 0.5f), work.size.y}};
-        case Panel::Presets: return rightSlot(0.0f, 0.34f);
-        case Panel::ShadowMaps: return rightSlot(0.34f, 0.33f);
-        case Panel::SideView: return rightSlot(0.67f, 0.33f);
-        case Panel::Accuracy: return bottomMiddle(std::min(250.0f, work.size.y * 0.4f));
-        case Panel::ShadowZoom: return centred(560.0f, 600.0f);
-        case Panel::Help: return centred(460.0f, 330.0f);
-        case Panel::Confirm: return centred(380.0f, 0.0f);
+// Presets 34 %, Shadow maps 33 %, Side view 33 % of the right column; closed panels give their
+// share to the ones still open.
+void stackRight(Layout& l, float x0, float x1, float y0, float y1, PanelsShown shown) {
+    const float weights[3] = {0.34f, shown.shadowMaps ? 0.33f : 0.0f, shown.sideView ? 0.33f : 0.0f};
+    const float total = weights[0] + weights[1] + weights[2];
+    Rect* slots[3] = {&l.presets, &l.shadowMaps, &l.sideView};
+    float y = y0;
+    for (int i = 0; i < 3; ++i) {
+        if (weights[i] <= 0.0f) continue;
+        const float h = (y1 - y0) * weights[i] / total;
+        *slots[i] = rect(x0, y, x1, y + h);
+        y += h;
     }
-    return work;
+}
+
+Rect centred(float width, float height) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const ImVec2 c{viewport->Pos.x + viewport->Size.x * 0.5f, viewport->Pos.y + viewport->Size.y * 0.5f};
+    return rect(c.x - width * 0.5f, c.y - height * 0.5f, c.x + width * 0.5f, c.y + height * 0.5f);
+}
+
+// The user resized a docked window: keep the new column width or panel height.
+void takeBackSize(UiFrame& f, Panel panel, const Rect& placed) {
+    const ImVec2 size = ImGui::GetWindowSize();
+    LayoutPrefs& p = f.state.prefs;
+    switch (panel) {
+        case Panel::Settings:
+            if (size.x != placed.width()) p.leftWidth = size.x;
+            break;
+        case Panel::Presets:
+        case Panel::ShadowMaps:
+        case Panel::SideView:
+            if (size.x != placed.width()) p.rightWidth = size.x;
+            break;
+        case Panel::Accuracy:
+            if (size.y != placed.height()) p.bottomHeight = size.y;
+            break;
+        default: break;
+    }
 }
 
 }  // namespace
 
+const Rect& Layout::of(Panel panel) const {
+    switch (panel) {
+        case Panel::Settings: return settings;
+        case Panel::Presets: return presets;
+        case Panel::ShadowMaps: return shadowMaps;
+        case Panel::SideView: return sideView;
+        case Panel::Accuracy: return accuracy;
+        case Panel::SplitBar: return splitBar;
+        case Panel::Status: return status;
+        default: return scene;
+    }
+}
+
+Layout computeLayout(ImVec2 origin, ImVec2 size, const LayoutMetrics& m, const LayoutPrefs& prefs, PanelsShown shown) {
+    Layout l;
+    const float x0 = origin.x, x1 = origin.x + size.x;
+    const float top = origin.y + m.menuBar, bottom = origin.y + size.y - m.statusBar;
+    l.status = rect(x0, bottom, x1, origin.y + size.y);
+    if (prefs.panelsHidden) {
+        l.scene = rect(x0, top, x1, bottom);
+        return l;
+    }
+    float left = clampTo(prefs.leftWidth, kMinLeft, size.x * kMaxLeftShare);
+    float right = clampTo(prefs.rightWidth, kMinRight, size.x * kMaxRightShare);
+    // A window below the supported 1000 px: the columns shrink together so the scene keeps a
+    // third of the width rather than vanishing under them.
+    if (const float room = size.x * (1.0f - kMinSceneShare); left + right > room) {
+        const float scale = room / (left + right);
+        left *= scale;
+        right *= scale;
+    }
+    const float cx0 = x0 + left, cx1 = x1 - right;
+    l.settings = rect(x0, top, cx0, bottom);
+    stackRight(l, cx1, x1, top, bottom, shown);
+    float sceneBottom = bottom;
+    if (shown.accuracy) {
+        const float h = clampTo(prefs.bottomHeight, kMinBottom, (bottom - top) * kMaxBottomShare);
+        l.accuracy = rect(cx0, bottom - h, cx1, bottom);
+        sceneBottom -= h;
+    }
+    l.splitBar = rect(cx0, sceneBottom - m.splitBar, cx1, sceneBottom);
+    l.scene = rect(cx0, top, cx1, sceneBottom - m.splitBar);
+    return l;
+}
+
+LayoutMetrics currentLayoutMetrics() {
+    LayoutMetrics m;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    m.menuBar = ImGui::GetFrameHeight();
+    // ImGui grows any window to WindowMinSize: a shorter bar would overlap the panels above.
+    m.statusBar = std::max(style.WindowMinSize.y, ImGui::GetTextLineHeight() + 2.0f * style.WindowPadding.y);
+    // Two text lines of labels over the bar itself, inside the window padding.
+    m.splitBar = ImGui::GetTextLineHeight() * 2.0f + ImGui::GetFrameHeight() + style.ItemSpacing.y * 2.0f +
+                 style.WindowPadding.y * 2.0f;
+    return m;
+}
+
+bool beginDockedPanel(UiFrame& f, Panel panel, const char* name, bool* open, ImGuiWindowFlags flags) {
+    const Rect& placed = f.state.layout.of(panel);
+    ImGui::SetNextWindowPos(placed.min, ImGuiCond_Always);
+    ImGui::SetNextWindowSize({placed.width(), placed.height()}, ImGuiCond_Always);
+    const bool visible = ImGui::Begin(name, open, flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                                      ImGuiWindowFlags_NoSavedSettings);
+    takeBackSize(f, panel, placed);
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    f.state.rects[std::string("window.") + name] = {pos, {pos.x + size.x, pos.y + size.y}};
+    return visible;
+}
+
 void placeNextWindow(Panel panel) {
-    const Area area = areaOf(panel);
+    Rect area;
+    switch (panel) {
+        case Panel::ShadowZoom: area = centred(560.0f, 600.0f); break;
+        case Panel::Help: area = centred(460.0f, 330.0f); break;
+        default: area = centred(380.0f, 0.0f); break;
+    }
     const ImGuiCond cond = panel == Panel::Confirm ? ImGuiCond_Appearing : ImGuiCond_FirstUseEver;
-    ImGui::SetNextWindowPos(area.pos, cond);
-    if (area.size.y > 0.0f) ImGui::SetNextWindowSize(area.size, cond);
+    ImGui::SetNextWindowPos(area.min, cond);
+    if (area.height() > 0.0f) ImGui::SetNextWindowSize({area.width(), area.height()}, cond);
 }
 
 }  // namespace st::ui

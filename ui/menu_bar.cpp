@@ -55,6 +55,8 @@ void viewMenu(UiFrame& f) {
     ImGui::Separator();
     debugViewItems(f);
     ImGui::Separator();
+    ImGui::MenuItem("Hide panels", "H", &f.state.prefs.panelsHidden);
+    recordItem(f.state.rects, "menu.hidePanels");
     ImGui::MenuItem("Shadow maps", nullptr, &f.state.showShadowMaps);
     ImGui::MenuItem("Side view", nullptr, &f.state.showSideView);
     ImGui::MenuItem("Accuracy", nullptr, &f.state.showAccuracy);

@@ -17,5 +17,8 @@ void drawConfirmDiscard(UiFrame& f);  // confirm_modal.cpp: "discard unsaved cha
 void drawSunAnimation(UiFrame& f);    // sun_preview.cpp: "animate sun", a preview undone when stopped
 void drawOpenDialog(UiFrame& f);      // open_dialog.cpp: File > Open, a path with completion
 void showOpenDialog(UiState& state);  // open_dialog.cpp: opens it, the cursor in the path
+void drawSplitBar(UiFrame& f);        // split_bar.cpp: cascade ranges under the scene, draggable splits
+void drawStatusBar(UiFrame& f);       // status_bar.cpp: frame rate, scene viewport size
+void drawSceneLegends(UiFrame& f);    // legends.cpp: colour keys over the scene viewport's corner
 
 }  // namespace st::ui

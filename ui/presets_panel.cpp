@@ -97,8 +97,7 @@ void drawMessages(UiFrame& f) {
 }  // namespace
 
 void drawPresetsPanel(UiFrame& f) {
-    placeNextWindow(Panel::Presets);
-    if (ImGui::Begin("Presets")) {
+    if (beginDockedPanel(f, Panel::Presets, "Presets", nullptr)) {
         drawDocumentLine(f);
         drawEditButtons(f);
         drawSaveAs(f);

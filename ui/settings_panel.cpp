@@ -69,7 +69,7 @@ void drawField(UiFrame& f, const FieldInfo& field) {
 // What a group shows after its fields: the sun toggle, the cascade figures.
 void drawGroupExtras(UiFrame& f, const std::string& key) {
     if (key == "light") drawSunAnimation(f);
-    if (key == "cascades") drawCascadeFigures(f.in.stats);
+    if (key == "cascades") drawCascadeFigures(f.s, f.in.stats, f.state.rects);
 }
 
 // The groups an artist tunes all day start open; output, measurement and new groups start closed.
@@ -116,8 +116,7 @@ float issueListHeight(const UiFrame& f) {
 
 void drawSettingsPanel(UiFrame& f) {
     f.state.issues = findIssues(f.s);
-    placeNextWindow(Panel::Settings);
-    if (ImGui::Begin("Settings")) {
+    if (beginDockedPanel(f, Panel::Settings, "Settings", nullptr)) {
         const float footer = issueListHeight(f);
         if (ImGui::BeginChild("fields", ImVec2(0.0f, -footer))) drawFields(f);
         ImGui::EndChild();

@@ -2,6 +2,7 @@
 // remapped for display), and a bigger window for the layer clicked.
 #include "ui/field_rules.h"
 #include "ui/layout.h"
+#include "ui/legends.h"
 #include "ui/panels.h"
 
 #include <imgui.h>
@@ -36,7 +37,7 @@ void drawTile(UiFrame& f, int layer, float size) {
     recordItem(f.state.rects, "shadow.tile" + std::to_string(layer));
     if (ImGui::IsItemClicked()) f.state.zoomLayer = layer;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tileTooltip(f, layer).c_str());
-    ImGui::Text("C%d", layer);
+    cascadeSwatch(layer);
     ImGui::EndGroup();
     ImGui::PopID();
 }
@@ -98,8 +99,7 @@ void drawZoomWindow(UiFrame& f) {
 
 void drawShadowViewer(UiFrame& f) {
     if (f.state.showShadowMaps) {
-        placeNextWindow(Panel::ShadowMaps);
-        if (ImGui::Begin("Shadow maps", &f.state.showShadowMaps)) drawTiles(f);
+        if (beginDockedPanel(f, Panel::ShadowMaps, "Shadow maps", &f.state.showShadowMaps)) drawTiles(f);
         ImGui::End();
     }
     drawZoomWindow(f);

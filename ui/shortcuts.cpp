@@ -26,12 +26,13 @@ void editingShortcuts(UiFrame& f, const ImGuiIO& io) {
     if (pressed(f.state.keys.open)) showOpenDialog(f.state);
 }
 
-// F, Tab, F1: only when no widget wants the keyboard.
+// F, Tab, F1, H: only when no widget wants the keyboard.
 void viewShortcuts(UiFrame& f, const ImGuiIO& io) {
     if (io.WantCaptureKeyboard || io.KeyCtrl || io.KeyAlt) return;
     if (pressed(f.state.keys.frame)) f.req.frameScene = true;
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Tab))) f.req.swapSideView = true;
     if (pressed(f.state.keys.help)) f.state.showHelp = !f.state.showHelp;
+    if (pressed(f.state.keys.hidePanels)) f.state.prefs.panelsHidden = !f.state.prefs.panelsHidden;
 }
 
 }  // namespace

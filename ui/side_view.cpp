@@ -1,6 +1,7 @@
 // The side view as a picture-in-picture window: shows the app's texture and hands mouse drags
 // and the wheel over it back to the app, which orbits its side camera.
 #include "ui/layout.h"
+#include "ui/legends.h"
 #include "ui/panels.h"
 
 #include <imgui.h>
@@ -32,6 +33,9 @@ void drawImage(UiFrame& f) {
     ImGui::GetWindowDrawList()->AddImage(f.in.sideView, ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
                                          ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));
     f.req.sideViewSize = size;
+    // Which wireframe is which cascade; the camera frustum is white, a colour no cascade uses.
+    if (f.in.stats) drawCascadeLegend(ImGui::GetWindowDrawList(), {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()},
+                                      static_cast<int>(f.in.stats->cascades.size()));
     reportInput(f);
 }
 
@@ -39,9 +43,8 @@ void drawImage(UiFrame& f) {
 
 void drawSideView(UiFrame& f) {
     if (!f.state.showSideView || !f.in.sideView) return;
-    placeNextWindow(Panel::SideView);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2.0f, 2.0f));
-    if (ImGui::Begin("Side view", &f.state.showSideView)) drawImage(f);
+    if (beginDockedPanel(f, Panel::SideView, "Side view", &f.state.showSideView)) drawImage(f);
     ImGui::End();
     ImGui::PopStyleVar();
 }

@@ -7,6 +7,7 @@
 #include "ui/editor_ui.h"
 #include "ui/field_widgets.h"
 #include "ui/history.h"
+#include "ui/layout.h"
 #include "ui/undo_stack.h"
 
 #include <filesystem>
@@ -58,6 +59,9 @@ struct UiState {
     PendingDiscard pending;
     bool openConfirm = false;              // open the confirmation modal this frame
     bool quitConfirmed = false;            // draw() returns quit
+
+    LayoutPrefs prefs;                     // column widths, hidden panels: kept by the app across runs
+    Layout layout;                         // this frame's panel and scene rectangles (beginFrame)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused

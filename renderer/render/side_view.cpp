@@ -1,6 +1,7 @@
 #include "renderer/render/side_view.h"
 
 #include "renderer/csm/frustum.h"
+#include "renderer/render/cascade_tints.h"
 
 #include <glm/glm.hpp>
 
@@ -33,10 +34,8 @@ csm::Corners boxCorners(const csm::CascadeFit& f) {
 }  // namespace
 
 glm::vec3 cascadeTint(int cascade) {
-    static const std::array<glm::vec3, 8> tints = {{{1.0f, 0.25f, 0.25f}, {0.25f, 1.0f, 0.25f}, {0.3f, 0.45f, 1.0f},
-                                                    {1.0f, 1.0f, 0.2f}, {1.0f, 0.3f, 1.0f}, {0.2f, 1.0f, 1.0f},
-                                                    {1.0f, 0.6f, 0.1f}, {0.6f, 0.3f, 1.0f}}};
-    return tints[static_cast<std::size_t>(cascade) % tints.size()];
+    const LinearRgb t = cascadeTintOf(cascade);
+    return {t.r, t.g, t.b};
 }
 
 csm::CameraParams sideCamera(const csm::CascadePlan& plan, const OrbitCamera& orbit, float aspect) {
@@ -65,9 +64,11 @@ std::vector<LineVertex> cascadeWireframes(const csm::CascadePlan& plan) {
     addEdges(lines, csm::sliceCornersFromCamera(plan.camera, plan.splits.front(), plan.splits.back()),
              glm::vec3(1.0f), true);
     for (int i = 0; i < n; ++i) {
-        // The split plane at the far end of cascade i, in its tint.
+        // The split plane at the far end of cascade i, in its tint; the last one is the frustum's
+        // far face, which stays white so the frustum has a colour no cascade uses.
         csm::Corners far = csm::sliceCornersFromCamera(plan.camera, plan.splits[i], plan.splits[i + 1]);
-        for (int k = 0; k < 4; ++k) lines.push_back({far[4 + k], cascadeTint(i)}), lines.push_back({far[4 + (k + 1) % 4], cascadeTint(i)});
+        if (i + 1 < n)
+            for (int k = 0; k < 4; ++k) lines.push_back({far[4 + k], cascadeTint(i)}), lines.push_back({far[4 + (k + 1) % 4], cascadeTint(i)});
         addEdges(lines, boxCorners(plan.cascades[i]), cascadeTint(i), true);
     }
     return lines;

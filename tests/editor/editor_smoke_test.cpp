@@ -76,6 +76,13 @@ std::string accuracyFigures(const std::string& log) {
     return from == std::string::npos || to == std::string::npos ? "" : log.substr(from, to + 4 - from);
 }
 
+// "520x383" from "accuracy: done in 1.23 s (520x383): ...".
+std::string sceneSize(const std::string& log) {
+    const auto done = log.find("accuracy: done in");
+    const auto from = log.find('(', done), to = log.find(')', from);
+    return done == std::string::npos || to == std::string::npos ? "" : log.substr(from + 1, to - from - 1);
+}
+
 }  // namespace
 
 // The Accuracy panel on the real window: after the camera has been still, the background ground
@@ -98,7 +105,10 @@ TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     const std::string editorLog = readText(log);
     ASSERT_NE(editorLog.find("accuracy: done in"), std::string::npos) << editorLog;
 
-    const std::string measure = "'" ST_SHADOWTUNE "' measure '" + preset.string() + "' --size 1280x720 --no-flicker "
+    // The scene viewport the panels leave ("accuracy: done in 1.23 s (520x383)"), measured at its size.
+    const std::string size = sceneSize(editorLog);
+    ASSERT_FALSE(size.empty()) << editorLog;
+    const std::string measure = "'" ST_SHADOWTUNE "' measure '" + preset.string() + "' --size " + size + " --no-flicker "
                                 "--frames 1 --out '" + (dir / "measure").string() + "' > '" + (dir / "measure.txt").string() + "' 2>&1";
     ASSERT_EQ(std::system(measure.c_str()), 0) << "measure failed, see " << (dir / "measure.txt");
     const std::string figures = accuracyFigures(editorLog);

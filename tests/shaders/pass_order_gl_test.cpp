@@ -60,7 +60,7 @@ struct Passes {
     void others(const Settings& s) {
         side.ensure(96, 64);
         renderer.renderSideView(s, {}, side);
-        tiles.update(renderer.shadowMaps(), renderer.plan(), scene.wsBounds, 64);
+        tiles.update(renderer.shadowMaps(), 64);
         measure.run(renderer, s, renderer.plan().csProj * renderer.plan().vsView);
     }
 };

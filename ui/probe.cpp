@@ -1,0 +1,55 @@
+#include "ui/probe.h"
+
+#include "ui/field_rules.h"
+#include "ui/legends.h"
+#include "ui/ui_state.h"
+
+#include <imgui.h>
+
+#include <cmath>
+
+namespace st::ui {
+namespace {
+
+const char* litOrShadowed(float v) { return v >= 0.5f ? "lit" : "shadowed"; }
+
+void probeLines(const ProbeView& p) {
+    ImGui::Text("Pixel %d, %d", p.x, p.y);
+    if (p.cascade < 0) {
+        ImGui::TextUnformatted("Beyond the shadow distance: drawn lit");
+        return;
+    }
+    cascadeSwatch(p.cascade);
+    ImGui::SameLine();
+    ImGui::Text("texel %s, %.2f px per texel", formatLength(p.texelWorldSize).c_str(), double(p.pixelsPerTexel));
+    ImGui::Text("Shadow: test %s, filtered factor %.2f", litOrShadowed(p.hardResult), double(p.filteredFactor));
+    if (!p.sunFacing) ImGui::TextDisabled("Truth: faces away from the sun (N.L %.2f)", double(p.nDotL));
+    else if (p.truth < 0) ImGui::TextDisabled("Truth: not computed yet (Accuracy panel, camera still)");
+    else if ((p.truth == 1) == (p.hardResult >= 0.5f)) ImGui::Text("Truth: %s (correct)", p.truth ? "lit" : "shadowed");
+    else ImGui::TextColored({1.0f, 0.45f, 0.35f, 1.0f}, "Truth: %s (%s)", p.truth ? "lit" : "shadowed",
+                            p.truth ? "false shadow" : "false light");
+    ImGui::Text("Bias: %s constant + %s slope along the light", formatLength(p.constantBias).c_str(),
+                formatLength(p.slopeBias).c_str());
+    ImGui::Text("      %s normal offset (N.L %.2f)", formatLength(p.normalOffset).c_str(), double(p.nDotL));
+}
+
+}  // namespace
+
+void drawProbe(UiFrame& f) {
+    const Rect& scene = f.state.layout.scene;
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    if (!scene.contains(mouse) || ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow) || ImGui::IsAnyItemActive() ||
+        ImGui::IsAnyMouseDown())
+        return;  // flying the camera, or over a panel
+    f.req.probeWanted = true;
+    f.req.probePixel = {std::floor(mouse.x - scene.min.x), std::floor(mouse.y - scene.min.y)};
+    const ProbeView& p = f.in.probe;
+    // Only the pixel asked for: a readout of another pixel (the mouse moved on) is not shown.
+    if (!p.valid || p.x != int(f.req.probePixel.x) || p.y != int(f.req.probePixel.y)) return;
+    ImGui::BeginTooltip();
+    probeLines(p);
+    ImGui::EndTooltip();
+    recordItem(f.state.rects, "probe");  // the tooltip's last line
+}
+
+}  // namespace st::ui

@@ -1,0 +1,39 @@
+// The status bar along the bottom of the window: the frame rate, the scene viewport's size and
+// how to get the panels back when they are hidden. (The app's status line stays in the Presets
+// panel, next to the preset it is about.)
+#include "ui/status_bar.h"
+
+#include "ui/layout.h"
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace st::ui {
+
+std::string frameRateText(const History& cpuFrameMs) {
+    const float meanMs = cpuFrameMs.mean();
+    if (cpuFrameMs.size() == 0 || meanMs <= 0.0f) return "-- fps";
+    char text[48];
+    std::snprintf(text, sizeof text, "%.1f fps (%.1f ms)", 1000.0 / double(meanMs), double(meanMs));
+    return text;
+}
+
+void drawStatusBar(UiFrame& f) {
+    constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                                       ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing |
+                                       ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (beginDockedPanel(f, Panel::Status, "##status", nullptr, flags)) {
+        ImGui::TextUnformatted(frameRateText(f.state.timing.cpuFrameMs).c_str());
+        recordItem(f.state.rects, "status.fps");
+        const Rect& scene = f.state.layout.scene;
+        ImGui::SameLine(0.0f, 24.0f);
+        ImGui::Text("scene %.0f x %.0f px", double(scene.width()), double(scene.height()));
+        ImGui::SameLine(0.0f, 24.0f);
+        ImGui::TextDisabled(f.state.prefs.panelsHidden ? "H: show panels" : "H: hide panels");
+    }
+    ImGui::End();
+}
+
+}  // namespace st::ui
