@@ -5,6 +5,12 @@
 
 namespace st::app {
 
+Modifiers modifiersOf(std::span<const bool> keysDown) {
+    const auto down = [&](int key) { return static_cast<std::size_t>(key) < keysDown.size() && keysDown[static_cast<std::size_t>(key)]; };
+    // GLFW_KEY_LEFT_SHIFT 340, _CONTROL 341, _ALT 342, _SUPER 343; the right ones 344..347.
+    return {down(341) || down(345), down(340) || down(344), down(342) || down(346), down(343) || down(347)};
+}
+
 void KeyQueue::push(int key, bool down) { events_.push_back({key, down}); }
 
 bool KeyQueue::feed(std::span<bool> keysDown) {

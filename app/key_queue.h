@@ -9,6 +9,13 @@
 
 namespace st::app {
 
+// Ctrl, Shift, Alt, Super from the GLFW key codes held in `keysDown` (as imgui_impl_glfw 1.86
+// derives them), so a modifier tapped with a key is seen in the same frame as the key.
+struct Modifiers {
+    bool ctrl = false, shift = false, alt = false, super = false;
+};
+Modifiers modifiersOf(std::span<const bool> keysDown);
+
 class KeyQueue {
 public:
     void push(int key, bool down);  // from the key callback, in the order they came

@@ -70,8 +70,11 @@ protected:
         d.in.stats = &stats;
         d.frames(2);
     }
-    void frame() {
-        queue.feed(ImGui::GetIO().KeysDown);
+    void frame() {  // as EditorWindow::beginFrame does
+        ImGuiIO& io = ImGui::GetIO();
+        queue.feed(io.KeysDown);
+        const app::Modifiers held = app::modifiersOf(io.KeysDown);
+        io.KeyCtrl = held.ctrl, io.KeyShift = held.shift, io.KeyAlt = held.alt, io.KeySuper = held.super;
         d.frame();
     }
     void tap(int key) {
@@ -114,4 +117,14 @@ TEST_F(SlowFrameTest, TabSwapsTheViewsAndDoesNotMoveWidgetFocus) {
     frame();
     EXPECT_FALSE(ImGui::IsAnyItemActive()) << "Tab moved the keyboard into a widget";
     EXPECT_FALSE(ImGui::GetIO().WantTextInput);
+}
+
+TEST_F(SlowFrameTest, ACtrlChordTappedBetweenTwoFramesIsSeen) {
+    queue.push(341, true);  // GLFW_KEY_LEFT_CONTROL
+    queue.push(79, true);   // O
+    queue.push(79, false);
+    queue.push(341, false);
+    frame();
+    d.frames(3);
+    EXPECT_TRUE(d.drawn("open.path")) << "Ctrl+O opens File > Open";
 }
