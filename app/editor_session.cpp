@@ -1,6 +1,7 @@
 #include "app/editor_session.h"
 
 #include "app/layout_file.h"
+#include "app/side_split_handles.h"
 #include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
@@ -176,6 +177,9 @@ ui::UiInputs EditorSession::uiInputs() const {
     in.statusLine = status_;
     in.accuracy = accuracy_->view();
     in.probe = probeView_;
+    // The split planes as the side view picture shows them (not when it shows the main camera).
+    if (!swapped_ && pip_.width() > 0 && pip_.height() > 0)
+        in.sideSplitHandles = sideSplitHandles(renderer_->plan(), orbit_, float(pip_.width()) / float(pip_.height()));
     return in;
 }
 

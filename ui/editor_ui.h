@@ -21,6 +21,7 @@
 #include "ui/item_rects.h"
 #include "ui/layout.h"
 #include "ui/probe.h"
+#include "ui/split_bar.h"
 
 #include <imgui.h>
 
@@ -46,6 +47,7 @@ struct UiInputs {
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
     AccuracyView accuracy;                   // the background ground truth's state and figures
     ProbeView probe;                         // the frame at the pixel the last draw() asked for
+    std::vector<SideSplitHandle> sideSplitHandles;  // inner split planes in the side view picture
 };
 
 // What the app should do after this frame. Default: nothing.
