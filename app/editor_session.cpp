@@ -2,6 +2,7 @@
 
 #include "app/preset_list.h"
 #include "app/layout_file.h"
+#include "app/side_split_handles.h"
 #include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/preset_paths.h"
@@ -208,6 +209,9 @@ ui::UiInputs EditorSession::uiInputs() {
         return checkScene(spec, ground, baseDir);
     };
     in.probe = probeView_;
+    // The split planes as the side view picture shows them (not when it shows the main camera).
+    if (!swapped_ && pip_.width() > 0 && pip_.height() > 0)
+        in.sideSplitHandles = sideSplitHandles(renderer_->plan(), orbit_, float(pip_.width()) / float(pip_.height()));
     return in;
 }
 

@@ -21,6 +21,7 @@
 #include "ui/item_rects.h"
 #include "ui/layout.h"
 #include "ui/probe.h"
+#include "ui/split_bar.h"
 
 #include <imgui.h>
 
@@ -51,6 +52,7 @@ struct UiInputs {
     // scene is taken.
     std::function<std::string(const std::string& scene, bool ground, const std::filesystem::path& baseDir)> checkScene;
     ProbeView probe;                         // the frame at the pixel the last draw() asked for
+    std::vector<SideSplitHandle> sideSplitHandles;  // inner split planes in the side view picture
 };
 
 // What the app should do after this frame. Default: nothing.

@@ -23,14 +23,27 @@ std::vector<float> innerSplits(const Settings& s, const std::vector<float>& rend
     return {rendered.begin() + 1, rendered.end() - 1};
 }
 
-float draggedSplit(const std::vector<float>& inner, int index, float nearDepth, float farDepth, float fraction) {
+float clampedSplit(const std::vector<float>& inner, int index, float nearDepth, float farDepth, float depth) {
     const auto i = static_cast<std::size_t>(index);
     const float lo = i == 0 ? nearDepth : inner[i - 1];
     const float hi = i + 1 >= inner.size() ? farDepth : inner[i + 1];
     // A centimetre, or a thousandth of the gap, from each neighbour: never equal splits.
     const float gap = std::max((hi - lo) * 1e-3f, std::min(0.01f, (hi - lo) * 0.25f));
-    const float depth = nearDepth + std::clamp(fraction, 0.0f, 1.0f) * (farDepth - nearDepth);
     return std::clamp(depth, lo + gap, hi - gap);
+}
+
+float draggedSplit(const std::vector<float>& inner, int index, float nearDepth, float farDepth, float fraction) {
+    const float depth = nearDepth + std::clamp(fraction, 0.0f, 1.0f) * (farDepth - nearDepth);
+    return clampedSplit(inner, index, nearDepth, farDepth, depth);
+}
+
+void storeManualSplits(UiFrame& f, const std::vector<float>& inner) {
+    const FieldInfo* scheme = findField("cascades.scheme");
+    const FieldInfo* splits = findField("cascades.manualSplits");
+    if (!scheme || !splits) return;
+    bool changed = storeField(*scheme, f.s, static_cast<int>(SplitScheme::Manual));
+    changed = storeField(*splits, f.s, inner) || changed;
+    f.edited = f.edited || changed;
 }
 
 namespace {
@@ -88,16 +101,6 @@ bool dragHandle(UiFrame& f, const Bar& bar, std::vector<float>& inner, int index
     const float fraction = (ImGui::GetIO().MousePos.x - bar.min.x) / (bar.max.x - bar.min.x);
     inner[static_cast<std::size_t>(index)] = draggedSplit(inner, index, bar.nearDepth, bar.farDepth, fraction);
     return true;
-}
-
-// Manual scheme with the dragged splits, through the field table like every widget.
-void storeManualSplits(UiFrame& f, const std::vector<float>& inner) {
-    const FieldInfo* scheme = findField("cascades.scheme");
-    const FieldInfo* splits = findField("cascades.manualSplits");
-    if (!scheme || !splits) return;
-    bool changed = storeField(*scheme, f.s, static_cast<int>(SplitScheme::Manual));
-    changed = storeField(*splits, f.s, inner) || changed;
-    f.edited = f.edited || changed;
 }
 
 void drawBar(UiFrame& f, const std::vector<float>& rendered) {

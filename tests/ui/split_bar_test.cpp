@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 using namespace st;
 using namespace st::test;
 
@@ -62,4 +64,30 @@ TEST(SplitBarTest, OneHandlePerInnerSplit) {
     EXPECT_TRUE(d.drawn("splitBar.handle0"));
     EXPECT_TRUE(d.drawn("splitBar.handle2"));
     EXPECT_FALSE(d.drawn("splitBar.handle3")) << "4 cascades: 3 inner splits";
+}
+
+// Issue 13 item 6, in the side view: a split plane's handle dragged along its own direction moves
+// the split by the metres the app's projection says, as one undo step; orbiting is not started.
+TEST(SplitBarTest, SplitPlaneDraggedInTheSideViewMovesByItsMetres) {
+    UiDriver d;
+    FrameStats stats = fakeFrameStats();  // inner splits 6.2 | 24.5 | 92 m
+    d.in.stats = &stats;
+    d.in.sideView = reinterpret_cast<ImTextureID>(std::uintptr_t{1});
+    // Split 1 (24.5 m) at the picture's centre, 1 % of its width to the right per metre.
+    d.in.sideSplitHandles = {{{0.2f, 0.5f}, {0.01f, 0.0f}}, {{0.5f, 0.5f}, {0.01f, 0.0f}}, {{0.8f, 0.5f}, {0.01f, 0.0f}}};
+    d.frames(2);
+    const Settings before = d.s;
+    const ui::ItemRect picture = d.rect("sideView");
+    const float width = picture.max.x - picture.min.x;
+    const ui::ItemRect handle = d.rect("sideView.split1");
+    EXPECT_NEAR(handle.center().x, picture.at(0.5f, 0.5f).x, 1.0f);
+    d.drag(handle.center(), {handle.center().x + 0.05f * width, handle.center().y});  // 5 m
+    EXPECT_EQ(d.s.cascades.scheme, SplitScheme::Manual);
+    ASSERT_EQ(d.s.cascades.manualSplits.size(), 3u);
+    const float metresPerPixel = 1.0f / (0.01f * width);  // ImGui floors mouse positions: a pixel
+    EXPECT_NEAR(d.s.cascades.manualSplits[1], 24.5f + 5.0f, metresPerPixel);
+    EXPECT_FLOAT_EQ(d.s.cascades.manualSplits[0], 6.2f);
+    EXPECT_EQ(d.last.sideViewOrbit.x, 0.0f) << "the handle took the drag, not the orbit";
+    d.pressKey(kKeyZ, true);
+    EXPECT_EQ(d.s, before);
 }
