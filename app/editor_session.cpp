@@ -3,6 +3,7 @@
 #include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
+#include "sweep/sweep_spec.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -26,6 +27,10 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : w
     ui_ = std::make_unique<ui::EditorUi>(opt.presetDir);
     ui_->setDocument(settings_, presetPath_);
     accuracy_ = std::make_unique<EditorAccuracy>();
+    std::error_code ec;
+    sweep_ = std::make_unique<EditorSweep>(fs::read_symlink("/proc/self/exe", ec));  // this binary's `sweep`
+    for (const FieldInfo& field : fieldTable())
+        if (sweep::isSweepable(field)) sweepable_.emplace_back(field.path);
     scanPresets();
     lastTime_ = glfwGetTime();
 }
@@ -96,6 +101,30 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     pipHeight_ = int(r.sideViewSize.y);
     if (r.settingsValid) valid_ = settings_;
     window_.setTitle(ui_->windowTitle());
+    a_ = r.abSettings ? std::optional<Settings>(*r.abSettings) : std::nullopt;
+    split_ = r.abSplit && a_;
+    divider_ = r.abDivider;
+    if (!split_) abStats_.reset();
+    if (r.sweepCancel) sweep_->cancel();
+    if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path());
+}
+
+void EditorSession::renderA(const ui::UiRequests& r, int width, int height) {
+    if (!split_ || swapped_) return;
+    Settings live = valid_;
+    live.output.width = width;
+    live.output.height = height;
+    const Settings a = aOnLive(*a_, live);
+    if (!accuracyA_) accuracyA_ = std::make_unique<EditorAccuracy>();
+    bool rendered = true;
+    try {
+        abStats_ = ab_.renderA(*renderer_, a);
+    } catch (const std::exception& e) {  // A's settings on this view are rejected: say so, show live
+        status_ = std::string("A: ") + e.what();
+        abStats_.reset();
+        rendered = false;
+    }
+    accuracyA_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, a, scene_);
 }
 
 bool EditorSession::renderViews(int width, int height) {
@@ -131,13 +160,14 @@ void EditorSession::updateAccuracy(const ui::UiRequests& r, bool rendered, int w
     s.output.width = width;
     s.output.height = height;
     accuracy_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, s, scene_);
-    if (r.errorOverlay && !swapped_ && accuracy_->overlay())
+    if (r.errorOverlay && !swapped_ && !split_ && accuracy_->overlay())
         ui::drawErrorOverlay(reinterpret_cast<ImTextureID>(std::uintptr_t(accuracy_->overlay())));
 }
 
 void EditorSession::present(int width, int height) {
     glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, width, height, 0, 0, width, height,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (split_ && !swapped_ && abStats_) ab_.composite(0, divider_);
 }
 
 ui::UiInputs EditorSession::uiInputs() const {
@@ -151,6 +181,10 @@ ui::UiInputs EditorSession::uiInputs() const {
     in.presetFiles = presetFiles_;
     in.statusLine = status_;
     in.accuracy = accuracy_->view();
+    if (abStats_) in.ab.stats = &*abStats_;
+    if (accuracyA_) in.ab.accuracy = accuracyA_->view();
+    in.sweep = &sweep_->view();
+    in.sweepableFields = sweepable_;
     return in;
 }
 
@@ -162,6 +196,7 @@ void EditorSession::frame(const fs::path* screenshot) {
         ui_->requestQuit();
     }
     handleInput();
+    sweep_->poll();
     const ui::UiRequests requests = ui_->draw(settings_, uiInputs());
     applyRequests(requests);
     if (const SceneOptions options{.ground = valid_.ground}; valid_.scene != loadedScene_ || options != loadedOptions_)
@@ -169,6 +204,7 @@ void EditorSession::frame(const fs::path* screenshot) {
     int width = 0, height = 0;
     window_.framebufferSize(width, height);
     if (width >= 16 && height >= 16) {
+        renderA(requests, width, height);
         const bool rendered = renderViews(width, height);
         updateAccuracy(requests, rendered, width, height);
         present(width, height);

@@ -69,6 +69,11 @@ void trackEditGesture(UiFrame& f, const Settings& beforeWidgets) {
     if (f.state.gestureStart && !ImGui::IsAnyItemActive()) closeGesture(f);
 }
 
+void applyEdit(UiFrame& f, Settings after) {
+    closeGesture(f);
+    if (f.state.undo.push(f.s, after)) replaceSettings(f, std::move(after));
+}
+
 void undoEdit(UiFrame& f) {
     closeGesture(f);
     if (auto restored = f.state.undo.undo(f.s)) replaceSettings(f, std::move(*restored));

@@ -24,6 +24,9 @@ void runPendingDiscard(UiFrame& f);
 // Records the widget edit in progress as one undo step once no widget is active any more.
 void trackEditGesture(UiFrame& f, const Settings& beforeWidgets);
 
+// Replaces the settings with `after` as one undo step (a picked sweep point, a pasted method).
+void applyEdit(UiFrame& f, Settings after);
+
 void undoEdit(UiFrame& f);
 void redoEdit(UiFrame& f);
 

@@ -35,6 +35,7 @@ void drawPanels(UiFrame& f) {
     drawShadowViewer(f);
     drawSideView(f);
     drawAccuracyPanel(f);
+    drawCompare(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
 }

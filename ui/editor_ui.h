@@ -18,12 +18,14 @@
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/settings.h"
 #include "ui/accuracy_view.h"
+#include "ui/compare_view.h"
 #include "ui/item_rects.h"
 
 #include <imgui.h>
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,9 @@ struct UiInputs {
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
     AccuracyView accuracy;                   // the background ground truth's state and figures
+    AbView ab;                               // the A half of the split view (while it is on)
+    const SweepView* sweep = nullptr;        // the Sweep panel's run; nullptr: none yet
+    std::vector<std::string> sweepableFields;  // field paths a sweep may vary (sweep::isSweepable)
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -64,6 +69,11 @@ struct UiRequests {
     bool accuracyWanted = false;             // the Accuracy panel is open: compute its figures
     bool errorOverlay = false;               // ... and its error overlay is switched on: pass the
                                              // overlay to drawErrorOverlay() when it is current
+    const Settings* abSettings = nullptr;    // A ("Set as A"), while one is set; valid until the next draw()
+    bool abSplit = false;                    // the split view is on: render A left of the divider
+    float abDivider = 0.5f;                  // the divider, as a fraction of the window's width
+    std::optional<SweepRequest> sweepStart;  // Run pressed in the Sweep panel, with valid axes
+    bool sweepCancel = false;                // Cancel pressed
 };
 
 // Native key codes the platform backend writes into io.KeysDown. ImGui 1.86 names only a few keys

@@ -13,6 +13,7 @@ void drawShadowViewer(UiFrame& f);    // shadow_viewer.cpp: a tile per cascade, 
 void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with orbit input
 void drawHelpWindow(UiFrame& f);      // help_window.cpp: shortcuts (F1)
 void drawAccuracyPanel(UiFrame& f);   // accuracy_panel.cpp: ground-truth figures, overlay toggle
-void drawConfirmDiscard(UiFrame& f);  // confirm_modal.cpp: "discard unsaved changes?"
+void drawConfirmDiscard(UiFrame& f);
+void drawCompare(UiFrame& f);         // ab_split.cpp: Compare menu, Set as A, split divider; sweep_panel.cpp  // confirm_modal.cpp: "discard unsaved changes?"
 
 }  // namespace st::ui

@@ -3,6 +3,7 @@
 // replayed: docs/architecture.md#no-static-local-ui-state), and the per-frame bundle the
 // panels draw from. Internal to ui/.
 #include "renderer/settings/validation.h"
+#include "ui/compare_state.h"
 #include "ui/document.h"
 #include "ui/editor_ui.h"
 #include "ui/history.h"
@@ -48,6 +49,8 @@ struct UiState {
     PendingDiscard pending;
     bool openConfirm = false;              // open the confirmation modal this frame
     bool quitConfirmed = false;            // draw() returns quit
+
+    CompareUiState compare;                // A/B split and Sweep panel (ab_split.cpp, sweep_panel.cpp)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     ItemRects rects;
