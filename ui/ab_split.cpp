@@ -32,15 +32,20 @@ void toggleSplit(UiFrame& f) {
 
 void compareMenu(UiFrame& f) {
     if (!ImGui::BeginMainMenuBar()) return;  // appends to the menu bar of drawMenuBar()
-    if (ImGui::BeginMenu("Compare")) {
+    const bool open = ImGui::BeginMenu("Compare");
+    recordItem(f.state.rects, "menu.compare");
+    if (open) {
         if (ImGui::MenuItem("Set as A", "Ctrl+Shift+A")) setAsA(f);
+        recordItem(f.state.rects, "menu.compare.setA");
         if (ImGui::MenuItem("Split A | live", "Ctrl+Shift+B", f.state.compare.split)) toggleSplit(f);
+        recordItem(f.state.rects, "menu.compare.split");
         if (ImGui::MenuItem("Forget A", nullptr, false, f.state.compare.a.has_value())) {
             f.state.compare.a.reset();
             f.state.compare.split = false;
         }
         ImGui::Separator();
         ImGui::MenuItem("Sweep panel", nullptr, &f.state.compare.showSweep);
+        recordItem(f.state.rects, "menu.compare.sweep");
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -56,23 +61,23 @@ void shortcuts(UiFrame& f) {
 std::string accuracyText(const AccuracyView& a) {
     char text[96];
     switch (a.state) {
-    case AccuracyView::State::Off: return "misclassified: open the Accuracy panel";
-    case AccuracyView::State::Settling: return "misclassified: waiting for a still frame";
+    case AccuracyView::State::Off: return "accuracy: open its panel";
+    case AccuracyView::State::Settling: return "accuracy: settling";
     case AccuracyView::State::Computing:
-        std::snprintf(text, sizeof text, "misclassified: computing %.0f%%", 100.0 * a.progress);
+        std::snprintf(text, sizeof text, "accuracy: %.0f%%", 100.0 * a.progress);
         return text;
-    case AccuracyView::State::Failed: return "misclassified: failed (" + a.error + ")";
+    case AccuracyView::State::Failed: return "accuracy failed";
     case AccuracyView::State::Done:
-        std::snprintf(text, sizeof text, "misclassified %.3f%%", 100.0 * a.all.share(a.all.misclassified()));
+        std::snprintf(text, sizeof text, "%.3f%% misclass.", 100.0 * a.all.share(a.all.misclassified()));
         return text;
     }
     return "";
 }
 
 std::string costText(const FrameStats* s) {
-    if (!s) return "GPU -, memory -";
+    if (!s) return "GPU - ms, - MiB";
     char text[96];
-    std::snprintf(text, sizeof text, "GPU %.2f + %.2f ms, %.1f MiB", s->gpuShadowMs, s->gpuMainMs,
+    std::snprintf(text, sizeof text, "GPU %.1f+%.1f ms %.1f MiB", s->gpuShadowMs, s->gpuMainMs,
                   double(s->shadowMapBytes) / (1024.0 * 1024.0));
     return text;
 }
@@ -106,16 +111,17 @@ void divider(UiFrame& f) {
                                        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                                        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0.0f, 0.0f});
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, {1.0f, 1.0f});  // the default 32 px would off-centre the grip
+    bool active = false;
     if (ImGui::Begin("##abDivider", nullptr, flags)) {
         ImGui::InvisibleButton("abDividerGrip", ImGui::GetContentRegionAvail());
         recordItem(f.state.rects, "ab.divider");
         if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-        if (ImGui::IsItemActive() && display.x > 0.0f)
-            c.divider = std::clamp(ImGui::GetIO().MousePos.x / display.x, 0.02f, 0.98f);
+        active = ImGui::IsItemActive();
+        if (active && display.x > 0.0f) c.divider = std::clamp(ImGui::GetIO().MousePos.x / display.x, 0.02f, 0.98f);
     }
     ImGui::End();
-    ImGui::PopStyleVar();
-    const bool active = f.state.rects.count("ab.divider") && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f);
+    ImGui::PopStyleVar(2);
     ImGui::GetBackgroundDrawList()->AddLine({x, top}, {x, display.y}, active ? IM_COL32(255, 220, 80, 255) : IM_COL32_WHITE, 2.0f);
     const float y = top + 8.0f;
     label(f, "ab.labelA", x - 10.0f, y, true, IM_COL32(80, 200, 255, 255), "A", f.in.ab.accuracy, f.in.ab.stats);

@@ -64,7 +64,7 @@ void drawAxes(ImDrawList* dl, const PlotMapping& m, const char* xLabel, const ch
     }
     dl->AddRect(m.min, m.max, kAxis);
     dl->AddText({(m.min.x + m.max.x - ImGui::CalcTextSize(xLabel).x) * 0.5f, m.max.y + 5.0f + line}, kAxis, xLabel);
-    dl->AddText({m.min.x - 52.0f, m.min.y - line - 4.0f}, kAxis, yLabel);
+    dl->AddText({m.min.x - 52.0f, m.min.y - line - 3.0f}, kAxis, yLabel);
 }
 
 }  // namespace
@@ -120,7 +120,7 @@ PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const float line = ImGui::GetTextLineHeight();
     PlotMapping m;
-    m.min = {origin.x + 58.0f, origin.y + line * 2.0f + 8.0f};
+    m.min = {origin.x + 58.0f, origin.y + line * 3.0f + 10.0f};  // title, legend, y label above
     m.max = {origin.x + size.x - 12.0f, origin.y + size.y - line * 2.0f - 10.0f};
     if (m.max.x - m.min.x < 40.0f || m.max.y - m.min.y < 40.0f) return result;
 
@@ -134,7 +134,7 @@ PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size) {
     drawAxes(dl, m, byMemory ? "shadow-map memory (MiB)" : "GPU time, shadow + main (ms)", "misclassified (%)");
 
     float lx = m.min.x;
-    const ImVec2 legendAt{m.min.x, origin.y};
+    const ImVec2 legendAt{m.min.x, origin.y + line + 2.0f};
     lx = legendEntry(dl, {lx, legendAt.y}, 0, kPoint, "point");
     lx = legendEntry(dl, {lx, legendAt.y}, 1, kFront, "Pareto front");
     lx = legendEntry(dl, {lx, legendAt.y}, 2, kCurrent, "current");
@@ -162,7 +162,7 @@ PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size) {
     char title[160];
     std::snprintf(title, sizeof title, "%s, %dx%d: %zu of %zu points", view.scene.c_str(), view.width, view.height,
                   view.points.size(), view.total);
-    dl->AddText({m.min.x, origin.y + line + 2.0f}, kAxis, title);
+    dl->AddText({m.min.x, origin.y}, kAxis, title);
     return result;
 }
 

@@ -133,10 +133,7 @@ void chart(UiFrame& f, const SweepView& v) {
     ImGui::SameLine();
     ImGui::RadioButton("x: memory", f.state.compare.byMemory) && (f.state.compare.byMemory = true);
     recordItem(f.state.rects, "sweep.byMemory");
-    if (!v.folder.empty()) {
-        ImGui::SameLine();
-        ImGui::TextDisabled("results and charts: %s", v.folder.c_str());
-    }
+    if (!v.folder.empty()) ImGui::TextDisabled("results and charts: %s", v.folder.c_str());
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const PlotResult r = drawParetoPlot(v, f.state.compare.byMemory, {std::max(avail.x, 200.0f), std::max(avail.y - 24.0f, 160.0f)});
     recordItem(f.state.rects, "sweep.plot");
@@ -152,8 +149,8 @@ void chart(UiFrame& f, const SweepView& v) {
 void drawSweepPanel(UiFrame& f) {
     CompareUiState& c = f.state.compare;
     if (!c.showSweep) return;
-    ImGui::SetNextWindowPos({340.0f, 380.0f}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({620.0f, 520.0f}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos({436.0f, 130.0f}, ImGuiCond_FirstUseEver);  // over the scene view's lower part
+    ImGui::SetNextWindowSize({510.0f, 585.0f}, ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Sweep", &c.showSweep)) {
         const bool busy = running(f.in.sweep);
         ImGui::BeginDisabled(busy);
