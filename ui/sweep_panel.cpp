@@ -87,9 +87,11 @@ void runControls(UiFrame& f, const ParsedSweep& parsed) {
     if (ImGui::Button("Run sweep")) f.req.sweepStart = parsed.request;
     ImGui::EndDisabled();
     recordItem(f.state.rects, "sweep.run");
-    ImGui::SameLine();
-    ImGui::Text("%zu points + current%s, at %dx%d", parsed.points, f.state.compare.a ? " + A" : "",
-                f.state.compare.width, f.state.compare.height);
+    if (parsed.request) {
+        ImGui::SameLine();
+        ImGui::Text("%zu points + current%s, at %dx%d", parsed.points, f.state.compare.a ? " + A" : "",
+                    f.state.compare.width, f.state.compare.height);
+    }
     if (!v) return;
     switch (v->state) {
     case SweepView::State::Done: ImGui::Text("Done: %zu points in %.0f s", v->done, v->elapsedS); break;
