@@ -12,13 +12,13 @@
 
 namespace st::ui {
 
-void drawSweepPanel(UiFrame& f);  // sweep_panel.cpp
-
 namespace {
 
 // GLFW key codes as imgui_impl_glfw 1.86 writes them into io.KeysDown (see ShortcutKeys).
 constexpr int kKeyA = 65;
 constexpr int kKeyB = 66;
+
+}  // namespace
 
 void setAsA(UiFrame& f) {
     f.state.compare.a = f.s;
@@ -29,6 +29,8 @@ void toggleSplit(UiFrame& f) {
     if (!f.state.compare.a) f.state.compare.a = f.s;  // nothing to compare with yet: A = now
     f.state.compare.split = !f.state.compare.split;
 }
+
+namespace {
 
 void compareMenu(UiFrame& f) {
     if (!ImGui::BeginMainMenuBar()) return;  // appends to the menu bar of drawMenuBar()

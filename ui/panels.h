@@ -14,6 +14,9 @@ void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with 
 void drawHelpWindow(UiFrame& f);      // help_window.cpp: shortcuts (F1)
 void drawAccuracyPanel(UiFrame& f);   // accuracy_panel.cpp: ground-truth figures, overlay toggle
 void drawConfirmDiscard(UiFrame& f);
-void drawCompare(UiFrame& f);         // ab_split.cpp: Compare menu, Set as A, split divider; sweep_panel.cpp  // confirm_modal.cpp: "discard unsaved changes?"
+void drawCompare(UiFrame& f);         // ab_split.cpp: Compare menu, Set as A, split divider; sweep_panel.cpp
+void drawSweepPanel(UiFrame& f);      // sweep_panel.cpp (called by drawCompare)
+void setAsA(UiFrame& f);              // ab_split.cpp: snapshot the settings as A, split on
+void toggleSplit(UiFrame& f);         // ab_split.cpp: split on/off (A = now if none yet)  // confirm_modal.cpp: "discard unsaved changes?"
 
 }  // namespace st::ui

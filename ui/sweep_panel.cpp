@@ -12,6 +12,7 @@
 #include <string>
 
 namespace st::ui {
+
 namespace {
 
 const ImVec4 kErrorColour{1.0f, 0.35f, 0.3f, 1.0f};
@@ -154,6 +155,14 @@ void drawSweepPanel(UiFrame& f) {
     ImGui::SetNextWindowPos({436.0f, 130.0f}, ImGuiCond_FirstUseEver);  // over the scene view's lower part
     ImGui::SetNextWindowSize({510.0f, 585.0f}, ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Sweep", &c.showSweep)) {
+        if (ImGui::Button("Set as A")) setAsA(f);
+        recordItem(f.state.rects, "sweep.setA");
+        ImGui::SameLine();
+        if (ImGui::Button(c.split ? "Split off" : "Split A | live")) toggleSplit(f);
+        recordItem(f.state.rects, "sweep.split");
+        ImGui::SameLine();
+        ImGui::TextDisabled(c.a ? "A is set: marked on the chart" : "A: not set");
+        ImGui::Separator();
         const bool busy = running(f.in.sweep);
         ImGui::BeginDisabled(busy);
         for (std::size_t i = 0; i < c.axes.size(); ++i) axisEditor(f, i);

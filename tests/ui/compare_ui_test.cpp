@@ -99,6 +99,17 @@ TEST_F(CompareUiTest, DraggingTheDividerMovesItAndNotTheSettings) {
     EXPECT_EQ(d.s, before);
 }
 
+TEST_F(CompareUiTest, ThePanelsButtonsSetAAndToggleTheSplit) {
+    openSweepPanel();
+    d.click("sweep.setA");
+    d.frame();
+    ASSERT_NE(d.last.abSettings, nullptr);
+    EXPECT_TRUE(d.last.abSplit);
+    d.click("sweep.split");
+    d.frame();
+    EXPECT_FALSE(d.last.abSplit);
+}
+
 TEST_F(CompareUiTest, RunSendsTheAxesAsTheSweepFileSpellsThem) {
     openSweepPanel();
     replaceText("sweep.axis1.values", "1, 3");
