@@ -7,6 +7,7 @@
 #include "renderer/image/image_io.h"
 #include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
+#include "sweep/sweep_spec.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -33,6 +34,10 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : w
     ui_->setDocument(settings_, presetPath_);
     ui_->setLayoutPrefs(loadLayoutPrefs(window_.configDir() / "layout.json"));
     accuracy_ = std::make_unique<EditorAccuracy>();
+    std::error_code ec;
+    sweep_ = std::make_unique<EditorSweep>(fs::read_symlink("/proc/self/exe", ec));  // this binary's `sweep`
+    for (const FieldInfo& field : fieldTable())
+        if (sweep::isSweepable(field)) sweepable_.emplace_back(field.path);
     scanPresets();
     lastTime_ = glfwGetTime();
 }
@@ -131,6 +136,30 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     pipHeight_ = int(r.sideViewSize.y);
     if (r.settingsValid) valid_ = settings_;
     window_.setTitle(ui_->windowTitle());
+    a_ = r.abSettings ? std::optional<Settings>(*r.abSettings) : std::nullopt;
+    split_ = r.abSplit && a_;
+    divider_ = r.abDivider;
+    if (!split_) abStats_.reset();
+    if (r.sweepCancel) sweep_->cancel();
+    if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path());
+}
+
+void EditorSession::renderA(const ui::UiRequests& r, int width, int height) {
+    if (!split_ || swapped_) return;
+    Settings live = valid_;
+    live.output.width = width;
+    live.output.height = height;
+    const Settings a = aOnLive(*a_, live);
+    if (!accuracyA_) accuracyA_ = std::make_unique<EditorAccuracy>();
+    bool rendered = true;
+    try {
+        abStats_ = ab_.renderA(*renderer_, a);
+    } catch (const std::exception& e) {  // A's settings on this view are rejected: say so, show live
+        status_ = std::string("A: ") + e.what();
+        abStats_.reset();
+        rendered = false;
+    }
+    accuracyA_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, a, scene_);
 }
 
 // The viewport the panels leave, in framebuffer pixels (HiDPI scale) with GL's bottom-left origin.
@@ -181,17 +210,18 @@ void EditorSession::updateAccuracy(const ui::UiRequests& r, bool rendered, int w
     s.output.width = width;
     s.output.height = height;
     accuracy_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, s, scene_);
-    if (r.errorOverlay && !swapped_ && accuracy_->overlay())
+    if (r.errorOverlay && !swapped_ && !split_ && accuracy_->overlay())
         ui::drawErrorOverlay(reinterpret_cast<ImTextureID>(std::uintptr_t(accuracy_->overlay())), scenePos_, sceneSize_);
 }
 
 // The scene into its viewport; the rest of the window is the panels' (cleared, so nothing of an
-// earlier, larger viewport shows between them).
+// earlier, larger viewport shows between them). With the split on, A's columns go left of the divider.
 void EditorSession::present() {
     const GLfloat background[4] = {0.06f, 0.06f, 0.06f, 1.0f};
     glClearNamedFramebufferfv(0, GL_COLOR, 0, background);
     glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, sceneWidth_, sceneHeight_, sceneX_, sceneY_,
                            sceneX_ + sceneWidth_, sceneY_ + sceneHeight_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (split_ && !swapped_ && abStats_) ab_.composite(0, divider_, sceneX_, sceneY_);
 }
 
 ui::UiInputs EditorSession::uiInputs() {
@@ -212,6 +242,10 @@ ui::UiInputs EditorSession::uiInputs() {
     // The split planes as the side view picture shows them (not when it shows the main camera).
     if (!swapped_ && pip_.width() > 0 && pip_.height() > 0)
         in.sideSplitHandles = sideSplitHandles(renderer_->plan(), orbit_, float(pip_.width()) / float(pip_.height()));
+    if (abStats_) in.ab.stats = &*abStats_;
+    if (accuracyA_) in.ab.accuracy = accuracyA_->view();
+    in.sweep = &sweep_->view();
+    in.sweepableFields = sweepable_;
     return in;
 }
 
@@ -240,11 +274,13 @@ void EditorSession::frame(const fs::path* screenshot) {
         ui_->requestQuit();
     }
     handleInput();
+    sweep_->poll();
     const ui::UiRequests requests = ui_->draw(settings_, uiInputs());
     applyRequests(requests);
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
     if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
+        renderA(requests, sceneWidth_, sceneHeight_);
         const bool rendered = renderViews(sceneWidth_, sceneHeight_);
         updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
         updateProbe(requests, rendered);

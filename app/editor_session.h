@@ -1,8 +1,10 @@
 #pragma once
 // One editing session: the Settings being tuned, the loaded scene and its renderer, the views
 // (main camera, side camera picture-in-picture, shadow-map tiles) and the panels.
+#include "app/ab_split_render.h"
 #include "app/editor_accuracy.h"
 #include "app/editor_app.h"
+#include "app/editor_sweep.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
 #include "app/view_actions.h"
@@ -16,6 +18,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +49,7 @@ private:
     void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
     bool renderViews(int width, int height);  // false: the settings failed, the last image stays
+    void renderA(const ui::UiRequests& r, int width, int height);  // the split's A half, before the live frame
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
     void present();
     void updateProbe(const ui::UiRequests& r, bool rendered);
@@ -88,6 +92,15 @@ private:
     double lastTime_ = 0.0;
     double cpuFrameMs_ = 0.0;
     std::vector<double> frameMs_;  // wall time of every frame, for printFrameTimes
+    // A/B split (Compare menu) and the Sweep panel's runs.
+    std::optional<Settings> a_;    // "Set as A", as the panels hold it
+    bool split_ = false;
+    float divider_ = 0.5f;
+    AbSplitRender ab_;
+    std::optional<FrameStats> abStats_;          // A's last frame while the split is on
+    std::unique_ptr<EditorAccuracy> accuracyA_;  // A's own ground-truth job
+    std::unique_ptr<EditorSweep> sweep_;
+    std::vector<std::string> sweepable_;         // sweep::isSweepable over the field table
 };
 
 }  // namespace st::app

@@ -108,6 +108,11 @@ bool recordStep(UiState& state, Settings before, const Settings& after) {
     return state.undo.push(before, after);
 }
 
+void applyEdit(UiFrame& f, Settings after) {
+    closeGesture(f);
+    if (recordStep(f.state, f.s, after)) replaceSettings(f, std::move(after));
+}
+
 void undoEdit(UiFrame& f) {
     closeGesture(f);
     if (auto restored = f.state.undo.undo(f.s)) replaceSettings(f, std::move(*restored));

@@ -35,6 +35,8 @@ void trackEditGesture(UiFrame& f, const Settings& beforeWidgets);
 // One undo step from `before` to `after` (e.g. a camera gesture the app made); false when they
 // differ in nothing the document holds.
 bool recordStep(UiState& state, Settings before, const Settings& after);
+// Replaces the settings with `after` as one undo step (a picked sweep point, a pasted method).
+void applyEdit(UiFrame& f, Settings after);
 
 void undoEdit(UiFrame& f);
 void redoEdit(UiFrame& f);

@@ -51,6 +51,7 @@ void drawPanels(UiFrame& f) {
     drawSceneLegends(f);
     drawProbe(f);
     drawStatusBar(f);
+    drawCompare(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
 }

@@ -18,6 +18,7 @@
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/settings.h"
 #include "ui/accuracy_view.h"
+#include "ui/compare_view.h"
 #include "ui/item_rects.h"
 #include "ui/layout.h"
 #include "ui/probe.h"
@@ -28,6 +29,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,9 @@ struct UiInputs {
     std::function<std::string(const std::string& scene, bool ground, const std::filesystem::path& baseDir)> checkScene;
     ProbeView probe;                         // the frame at the pixel the last draw() asked for
     std::vector<SideSplitHandle> sideSplitHandles;  // inner split planes in the side view picture
+    AbView ab;                               // the A half of the split view (while it is on)
+    const SweepView* sweep = nullptr;        // the Sweep panel's run; nullptr: none yet
+    std::vector<std::string> sweepableFields;  // field paths a sweep may vary (sweep::isSweepable)
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -78,6 +83,11 @@ struct UiRequests {
     bool accuracyWanted = false;             // the Accuracy panel is open: compute its figures
     bool errorOverlay = false;               // ... and its error overlay is switched on: pass the
                                              // overlay to drawErrorOverlay() when it is current
+    const Settings* abSettings = nullptr;    // A ("Set as A"), while one is set; valid until the next draw()
+    bool abSplit = false;                    // the split view is on: render A left of the divider
+    float abDivider = 0.5f;                  // the divider, as a fraction of the window's width
+    std::optional<SweepRequest> sweepStart;  // Run pressed in the Sweep panel, with valid axes
+    bool sweepCancel = false;                // Cancel pressed
 };
 
 // Native key codes the platform backend writes into io.KeysDown. ImGui 1.86 names only a few keys

@@ -20,5 +20,9 @@ void showOpenDialog(UiState& state);  // open_dialog.cpp: opens it, the cursor i
 void drawSplitBar(UiFrame& f);        // split_bar.cpp: cascade ranges under the scene, draggable splits
 void drawStatusBar(UiFrame& f);       // status_bar.cpp: frame rate, scene viewport size
 void drawSceneLegends(UiFrame& f);    // legends.cpp: colour keys over the scene viewport's corner
+void drawCompare(UiFrame& f);         // ab_split.cpp: Compare menu, Set as A, split divider; sweep_panel.cpp
+void drawSweepPanel(UiFrame& f);      // sweep_panel.cpp (called by drawCompare)
+void setAsA(UiFrame& f);              // ab_split.cpp: snapshot the settings as A, split on
+void toggleSplit(UiFrame& f);         // ab_split.cpp: split on/off (A = now if none yet)
 
 }  // namespace st::ui

@@ -3,6 +3,7 @@
 // replayed: docs/architecture.md#no-static-local-ui-state), and the per-frame bundle the
 // panels draw from. Internal to ui/.
 #include "renderer/settings/validation.h"
+#include "ui/compare_state.h"
 #include "ui/document.h"
 #include "ui/editor_ui.h"
 #include "ui/field_widgets.h"
@@ -62,6 +63,7 @@ struct UiState {
 
     LayoutPrefs prefs;                     // column widths, hidden panels: kept by the app across runs
     Layout layout;                         // this frame's panel and scene rectangles (beginFrame)
+    CompareUiState compare;                // A/B split and Sweep panel (ab_split.cpp, sweep_panel.cpp)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused
