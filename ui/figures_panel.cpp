@@ -40,7 +40,13 @@ void costRow(int index, const CascadeStats& c) {
     ImGui::TableNextColumn();
     ImGui::Text("%zu", c.casterTriangles);
     ImGui::TableNextColumn();
+    ImGui::Text("%zu", c.lowerBoundTriangles);
+    ImGui::TableNextColumn();
+    ImGui::Text("%zu / %zu", c.casterClusters, c.casterClustersTotal);
+    ImGui::TableNextColumn();
     ImGui::Text("%.2f ms", c.gpuMs);
+    ImGui::TableNextColumn();
+    ImGui::Text("%s: %s", c.redrawn ? "redrawn" : "cached", c.mapReason.c_str());
 }
 
 constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
@@ -58,8 +64,8 @@ void geometryTable(const FrameStats& stats) {
 }
 
 void costTable(const FrameStats& stats) {
-    if (!ImGui::BeginTable("cascadeCost", 4, kTableFlags)) return;
-    headers({"#", "caster draws", "triangles", "GPU"});
+    if (!ImGui::BeginTable("cascadeCost", 7, kTableFlags)) return;
+    headers({"#", "caster draws", "triangles", "lower bound", "clusters", "GPU", "map"});
     for (std::size_t i = 0; i < stats.cascades.size(); ++i) costRow(static_cast<int>(i), stats.cascades[i]);
     ImGui::EndTable();
 }

@@ -14,6 +14,8 @@ std::string toJsonText(const FrameStats& s) {
     j["gpuShadowMs"] = s.gpuShadowMs;
     j["gpuMainMs"] = s.gpuMainMs;
     j["cpuMs"] = s.cpuMs;
+    j["mainTriangles"] = s.mainTriangles;
+    j["mainDraws"] = s.mainDraws;
     auto& arr = j["cascades"] = nlohmann::ordered_json::array();
     for (const CascadeStats& c : s.cascades) {
         nlohmann::ordered_json e;
@@ -23,6 +25,11 @@ std::string toJsonText(const FrameStats& s) {
         e["texelWorldSize"] = c.texelWorldSize;
         e["casterDraws"] = c.casterDraws;
         e["casterTriangles"] = c.casterTriangles;
+        e["casterClusters"] = c.casterClusters;
+        e["casterClustersTotal"] = c.casterClustersTotal;
+        e["lowerBoundTriangles"] = c.lowerBoundTriangles;
+        e["redrawn"] = c.redrawn;
+        e["mapReason"] = c.mapReason;
         e["gpuMs"] = c.gpuMs;
         arr.push_back(e);
     }

@@ -1,6 +1,5 @@
 #include "renderer/render/renderer.h"
 
-#include "renderer/csm/culling.h"
 #include "renderer/render/shader_blocks.h"
 #include "renderer/render/shader_library.h"
 
@@ -27,13 +26,15 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
-    cascadeBlock_.upload(cascadeBlock(s, plan_));
     timers_.beginFrame(s.cascades.count + 1);
     shadowPass(s, stats);
+    cascadeBlock_.upload(cascadeBlock(s, plan_));  // after: a kept map brings the fit it was drawn with
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
     else
         mainPass(s, plan_.csProj * plan_.vsView, target_);
+    stats.mainTriangles = mainTriangles_;
+    stats.mainDraws = mainDraws_;
     stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (int i = 0; i < s.cascades.count; ++i) {
         stats.cascades[i].gpuMs = timers_.milliseconds(i);
@@ -55,25 +56,24 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
     state.colorWrite = false;  // depth only
     gpu::applyPassState(state);
     glUseProgram(depthProgram_.id());
-    scene_.bindGeometry();
+    if (options_.naive) scene_.bindGeometry();
+    else scene_.bindClusteredGeometry();
     frameBlock_.bind(ST_BLOCK_FRAME);
     viewBlock_.bind(ST_BLOCK_VIEW);
+    cache_.beginFrame(s, options_.cacheMaps && !options_.naive);
     for (int i = 0; i < s.cascades.count; ++i) {
         const std::string name = "cascade " + std::to_string(i);
         gpu::DebugGroup cascadeGroup(name.c_str());
-        const csm::CascadeFit& fit = plan_.cascades[i];
-        CascadeStats cs{fit.vsNear, fit.vsFar, fit.lsBox.extent(), fit.texelWorldSize};
+        CascadeStats cs;
         timers_.begin(i);
-        shadowMaps_.attachLayer(i);
-        glClear(GL_DEPTH_BUFFER_BIT);
-        viewBlock_.upload({fit.viewProj});
-        for (const DrawItem& item : scene_.scene().draws) {
-            if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
-            scene_.draw(item, FaceCulling::Keep);
-            ++cs.casterDraws;
-            cs.casterTriangles += item.indexCount / 3;
-        }
+        if (options_.naive) naiveCascadeCasters(s, i, cs);
+        else cascadeCasters(s, i, cs);
         timers_.end(i);
+        const csm::CascadeFit& fit = plan_.cascades[i];  // after: a kept map may bring its own
+        cs.vsNear = fit.vsNear;
+        cs.vsFar = fit.vsFar;
+        cs.lsExtent = fit.lsBox.extent();
+        cs.texelWorldSize = fit.texelWorldSize;
         stats.cascades.push_back(cs);
     }
 }
@@ -108,11 +108,10 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glUseProgram(mainProgram_.id());
-    scene_.bindGeometry();
     viewBlock_.upload({viewProj});
     viewBlock_.bind(ST_BLOCK_VIEW);
     bindShadingInputs();
-    for (const DrawItem& item : scene_.scene().draws) scene_.draw(item, FaceCulling::PerMaterial);
+    drawVisible(viewProj);
     glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
     glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
     timers_.end(s.cascades.count);

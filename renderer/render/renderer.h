@@ -6,6 +6,8 @@
 #include "renderer/gpu/gl.h"
 #include "renderer/gpu/pass_state.h"
 #include "renderer/gpu/uniform_buffer.h"
+#include "renderer/render/cascade_cache.h"
+#include "renderer/render/draw_batches.h"
 #include "renderer/render/frame_stats.h"
 #include "renderer/render/gpu_timer.h"
 #include "renderer/render/line_pass.h"
@@ -21,6 +23,17 @@
 #include <vector>
 
 namespace st {
+
+struct RenderOptions {
+    // The renderer before issue 11, kept as the benchmarks' baseline: one draw per scene item,
+    // culled against each light box per item, no main-pass culling, every map every frame.
+    bool naive = false;
+    // Keep a cascade's map while its matrix, casters and map settings stay (cascade_cache.h).
+    // Off: every map every frame (what `measure`'s cost frames time).
+    bool cacheMaps = true;
+    // Count FrameStats' lowerBoundTriangles (per triangle, on the CPU, when a map is redrawn).
+    bool lowerBound = true;
+};
 
 class Renderer {
 public:
@@ -42,7 +55,12 @@ public:
     GLuint framebuffer() const { return target_.framebuffer(); }
     GLuint shadowMapTexture() const { return shadowMaps_.texture(); }
     GLuint depthTexture() const { return target_.depthTexture(); }  // main pass depth, D32F
-    const csm::CascadePlan& plan() const { return plan_; }  // of the last render()
+    // Of the last render(); a cascade whose map an update interval kept holds the fit that map
+    // was drawn with (its vsNear, vsFar are this frame's).
+    const csm::CascadePlan& plan() const { return plan_; }
+    void setOptions(const RenderOptions& o) { options_ = o; }
+    const RenderOptions& options() const { return options_; }
+    void invalidateMaps() { cache_.invalidate(); }  // the next frame redraws every map
     // Binds the frame and cascade blocks of the last render() (ST_BLOCK_FRAME, ST_BLOCK_CASCADES)
     // and the shadow maps, for a pass that shades with them (the measurement pass).
     void bindShadingInputs() const;
@@ -53,9 +71,14 @@ public:
 
 private:
     void shadowPass(const Settings& s, FrameStats& stats);
+    // Cascade i of the clustered path (caster_pass.cpp): culls, then redraws or keeps the map.
+    void cascadeCasters(const Settings& s, int i, CascadeStats& cs);
+    void naiveCascadeCasters(const Settings& s, int i, CascadeStats& cs);
     // Draws the shaded scene seen through viewProj into `target`; shadows always follow the
     // main camera's cascades.
     void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target);
+    // The scene's triangles inside viewProj's frustum, with per-material face culling.
+    void drawVisible(const glm::mat4& viewProj);
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
     SceneGpu scene_;
     gpu::Program depthProgram_;
@@ -68,6 +91,12 @@ private:
     gpu::UniformBuffer<gpu_if::FrameBlock> frameBlock_;
     gpu::UniformBuffer<gpu_if::CascadeBlock> cascadeBlock_;
     gpu::UniformBuffer<gpu_if::ViewBlock> viewBlock_;
+    RenderOptions options_;
+    CascadeCache cache_;
+    DrawBatches batches_;
+    std::vector<CascadeStats> held_;  // figures of each map as last drawn
+    std::size_t mainTriangles_ = 0;
+    int mainDraws_ = 0;
 };
 
 }  // namespace st

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace st {
 namespace {
@@ -22,6 +24,23 @@ gpu::Texture uploadImage(const Image& img) {
     return t;
 }
 
+gpu::VertexArray sceneVertexArray(const gpu::Buffer& vertices, const gpu::Buffer& indices) {
+    gpu::VertexArray vao = gpu::createVertexArray();
+    GLuint v = vao.id();
+    glVertexArrayVertexBuffer(v, 0, vertices.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(v, indices.id());
+    struct Attrib { GLuint location; GLint size; GLuint offset; };
+    const Attrib attribs[3] = {{ST_ATTRIB_POSITION, 3, offsetof(Vertex, position)},
+                               {ST_ATTRIB_NORMAL, 3, offsetof(Vertex, normal)},
+                               {ST_ATTRIB_UV, 2, offsetof(Vertex, uv)}};
+    for (const Attrib& a : attribs) {
+        glEnableVertexArrayAttrib(v, a.location);
+        glVertexArrayAttribFormat(v, a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
+        glVertexArrayAttribBinding(v, a.location, 0);
+    }
+    return vao;
+}
+
 GLsizeiptr uniformStride(std::size_t bytes) {
     GLint align = 256;
     glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
@@ -35,19 +54,11 @@ SceneGpu::SceneGpu(const Scene& scene) : scene_(&scene) {
                                   static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(Vertex)));
     indices_ = gpu::createBuffer(scene.indices.data(),
                                  static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)));
-    vao_ = gpu::createVertexArray();
-    GLuint v = vao_.id();
-    glVertexArrayVertexBuffer(v, 0, vertices_.id(), 0, sizeof(Vertex));
-    glVertexArrayElementBuffer(v, indices_.id());
-    struct Attrib { GLuint location; GLint size; GLuint offset; };
-    const Attrib attribs[3] = {{ST_ATTRIB_POSITION, 3, offsetof(Vertex, position)},
-                               {ST_ATTRIB_NORMAL, 3, offsetof(Vertex, normal)},
-                               {ST_ATTRIB_UV, 2, offsetof(Vertex, uv)}};
-    for (const Attrib& a : attribs) {
-        glEnableVertexArrayAttrib(v, a.location);
-        glVertexArrayAttribFormat(v, a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
-        glVertexArrayAttribBinding(v, a.location, 0);
-    }
+    clustered_ = buildClusters(scene);
+    clusteredIndices_ = gpu::createBuffer(
+        clustered_.indices.data(), static_cast<GLsizeiptr>(clustered_.indices.size() * sizeof(std::uint32_t)));
+    vao_ = sceneVertexArray(vertices_, indices_);
+    clusteredVao_ = sceneVertexArray(vertices_, clusteredIndices_);
     for (const Image& img : scene.images) textures_.push_back(uploadImage(img));
     white_ = uploadImage(Image{1, 1, {255, 255, 255, 255}});
 
@@ -68,13 +79,13 @@ SceneGpu::SceneGpu(const Scene& scene) : scene_(&scene) {
 
 void SceneGpu::bindGeometry() const { glBindVertexArray(vao_.id()); }
 
-int SceneGpu::materialIndex(const DrawItem& item) const {
+int SceneGpu::materialIndex(int material) const {
     const int count = static_cast<int>(scene_->materials.size());
-    return item.material >= 0 && item.material < count ? item.material : count;
+    return material >= 0 && material < count ? material : count;
 }
 
-void SceneGpu::draw(const DrawItem& item, FaceCulling culling) const {
-    const auto m = static_cast<std::size_t>(materialIndex(item));
+void SceneGpu::bindMaterial(int material, FaceCulling culling) const {
+    const auto m = static_cast<std::size_t>(materialIndex(material));
     glBindBufferRange(GL_UNIFORM_BUFFER, ST_BLOCK_MATERIAL, materials_.id(),
                       static_cast<GLintptr>(m) * materialStride_, sizeof(gpu_if::MaterialBlock));
     glBindTextureUnit(ST_BINDING_BASE_COLOR, materialTexture_[m]);
@@ -82,8 +93,25 @@ void SceneGpu::draw(const DrawItem& item, FaceCulling culling) const {
         if (materialDoubleSided_[m]) glDisable(GL_CULL_FACE);
         else glEnable(GL_CULL_FACE);
     }
+}
+
+void SceneGpu::draw(const DrawItem& item, FaceCulling culling) const {
+    bindMaterial(item.material, culling);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(item.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(static_cast<std::uintptr_t>(item.firstIndex) * 4));
+}
+
+void SceneGpu::bindClusteredGeometry() const { glBindVertexArray(clusteredVao_.id()); }
+
+void SceneGpu::drawBatches(const DrawBatches& batches, FaceCulling culling) const {
+    std::vector<const void*> offsets;
+    for (const DrawBatch& b : batches.batches()) {
+        bindMaterial(b.material, culling);
+        offsets.clear();
+        for (std::uintptr_t o : b.byteOffsets) offsets.push_back(reinterpret_cast<const void*>(o));
+        glMultiDrawElements(GL_TRIANGLES, b.counts.data(), GL_UNSIGNED_INT, offsets.data(),
+                            static_cast<GLsizei>(b.counts.size()));
+    }
 }
 
 }  // namespace st

@@ -1,6 +1,8 @@
 #pragma once
 // The scene's vertices, indices, textures and materials on the GPU, and how to issue one DrawItem.
 #include "renderer/gpu/gl.h"
+#include "renderer/render/draw_batches.h"
+#include "renderer/scene/clusters.h"
 #include "renderer/scene/scene.h"
 
 #include <vector>
@@ -21,13 +23,23 @@ public:
     // the item's triangles.
     void draw(const DrawItem& item, FaceCulling culling) const;
 
+    // The scene's clusters (built at construction) and their own index buffer: bind it, then
+    // issue each batch's ranges with one glMultiDrawElements per material.
+    const ClusteredScene& clustered() const { return clustered_; }
+    void bindClusteredGeometry() const;
+    void drawBatches(const DrawBatches& batches, FaceCulling culling) const;
+
 private:
-    int materialIndex(const DrawItem& item) const;  // a valid index; the default material last
+    int materialIndex(int material) const;  // a valid index; the default material last
+    void bindMaterial(int material, FaceCulling culling) const;
 
     const Scene* scene_;
     gpu::Buffer vertices_;
     gpu::Buffer indices_;
     gpu::VertexArray vao_;
+    ClusteredScene clustered_;
+    gpu::Buffer clusteredIndices_;
+    gpu::VertexArray clusteredVao_;  // vertices_ with clusteredIndices_
     std::vector<gpu::Texture> textures_;
     gpu::Texture white_;
     // Every material's block, one per stride (GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT), uploaded once.

@@ -127,6 +127,13 @@ std::vector<FieldInfo> cascadeFitRows() {
         {.path = "cascades.blendBand", .label = "Blend band",
          .help = "Fraction of each cascade's depth range cross-faded into the next, to hide the seam between them.",
          .kind = K::Float, .min = 0, .max = 0.5, .step = 0.01, .shader = "blendBand", ST_FIELD_ACCESS(cascades.blendBand)},
+        {.path = "cascades.casterCulling", .label = "Caster culling",
+         .help = "Skips casters whose shadow cannot reach what the camera sees in a cascade; the image stays the same.",
+         .kind = K::Bool, ST_FIELD_ACCESS(cascades.casterCulling)},
+        {.path = "cascades.updateInterval", .label = "Update interval",
+         .help = "Frames between redraws of each cascade (e.g. 1, 1, 2, 4): far maps redrawn less often lag the camera.",
+         .unit = "frames", .kind = K::FloatList, .min = 1, .max = 64, .step = 1,
+         ST_FIELD_ACCESS(cascades.updateInterval)},
     };
 }
 

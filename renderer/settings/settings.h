@@ -127,6 +127,8 @@ struct CascadeSettings {
     float zExtensionDistance = 100.0f;     // metres, for ZExtension::Distance
     Selection selection = Selection::Interval;
     float blendBand = 0.0f;                // fraction of a cascade's depth range blended into the next, 0..0.5
+    bool casterCulling = true;             // cull casters whose shadow cannot reach the slice (Bittner 2011)
+    std::vector<float> updateInterval;     // frames between redraws of cascade i (whole numbers >= 1); missing = 1
     bool operator==(const CascadeSettings&) const = default;
 };
 

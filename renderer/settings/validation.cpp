@@ -149,6 +149,15 @@ void checkManualSplits(const Settings& s, std::vector<SettingsIssue>& out) {
     }
 }
 
+void checkUpdateInterval(const Settings& s, std::vector<SettingsIssue>& out) {
+    for (std::size_t i = 0; i < s.cascades.updateInterval.size(); ++i) {
+        const float k = s.cascades.updateInterval[i];
+        if (k == std::floor(k)) continue;
+        out.push_back({"cascades.updateInterval[" + std::to_string(i) + "]",
+                       "must be a whole number of frames, got " + formatFloat(k)});
+    }
+}
+
 void checkPathKeyframes(const Settings& s, std::vector<SettingsIssue>& out) {
     if (s.path.frames > 0 && s.path.keyframes.empty())
         out.push_back({"path.keyframes", "path.frames is " + std::to_string(s.path.frames) +
@@ -178,6 +187,9 @@ const std::vector<CrossRule>& crossRules() {
          {"camera.nearPlane", "camera.farPlane", "cascades.shadowDistance", "cascades.count", "cascades.scheme",
           "cascades.manualSplits"},
          checkManualSplits},
+        {"cascades.updateInterval holds whole numbers of frames (entries past cascades.count are unused).",
+         {"cascades.updateInterval"},
+         checkUpdateInterval},
         {"path.frames > 0 needs at least one keyframe; each keyframe's target must differ from its position.",
          {"path.frames", "path.keyframes"},
          checkPathKeyframes},

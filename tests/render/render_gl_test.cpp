@@ -161,6 +161,7 @@ TEST_F(RenderGLTest, EveryViewFilterAndFitRendersWithoutGLErrors) {
 TEST_F(RenderGLTest, CullingSkipsCastersOutsideEachLightBox) {
     Scene scene = makeBuiltinScene("yard");
     Renderer r(scene);
+    r.setOptions({.naive = true});  // per draw item (culling_cache_gl_test.cpp: per cluster)
     Settings s;
     s.output = {64, 64, View::Shaded};
     s.cascades.mapSize = 256;

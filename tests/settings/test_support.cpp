@@ -19,7 +19,7 @@ Settings everyFieldChanged() {
     s.cascades = {.count = 3, .scheme = SplitScheme::Manual, .lambda = 0.8f, .manualSplits = {10.0f, 40.5f},
                   .shadowDistance = 150.0f, .mapSize = 2048, .fit = FitMode::Sphere, .stabilize = true,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
-                  .blendBand = 0.1f};
+                  .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}};
     s.filter = {.kind = FilterKind::PcfNxN, .size = 5};
     s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
     s.output = {.width = 800, .height = 600, .view = View::Cascades};

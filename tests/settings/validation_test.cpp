@@ -85,8 +85,18 @@ TEST(ValidationTest, GroundIsOnlyForGltfScenes) {
     EXPECT_TRUE(validate(s).empty());
 }
 
+TEST(ValidationTest, UpdateIntervalsAreWholeFrames) {
+    Settings s;
+    s.cascades.updateInterval = {1.0f, 2.0f, 4.0f, 8.0f, 3.0f};  // past count: unused, but still frames
+    EXPECT_TRUE(validate(s).empty());
+    s.cascades.updateInterval = {1.0f, 2.5f};
+    EXPECT_EQ(validate(s), std::vector<std::string>{"cascades.updateInterval[1]: must be a whole number of frames, got 2.5"});
+    s.cascades.updateInterval = {0.0f};
+    EXPECT_EQ(validate(s).size(), 1u);  // below the row's range
+}
+
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 6u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 7u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 

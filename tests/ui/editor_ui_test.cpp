@@ -43,7 +43,8 @@ TEST_F(EditorUiTest, EveryFieldOfTheOpenGroupsHasAWidget) {
         const bool closedGroup = field.path.find('.') != std::string_view::npos &&
                                  group != "camera" && group != "light" && group != "cascades" &&
                                  group != "filter" && group != "bias";
-        if (closedGroup || field.path == "cascades.manualSplits") continue;
+        // Lists record their elements' rects; empty by default, they show only an Add button.
+        if (closedGroup || field.path == "cascades.manualSplits" || field.path == "cascades.updateInterval") continue;
         EXPECT_TRUE(d.drawn(field.path)) << field.path;
     }
     EXPECT_FALSE(d.drawn("output.width"));  // collapsed by default

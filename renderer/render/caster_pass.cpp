@@ -1,0 +1,116 @@
+// The culled, batched draws of the shadow and main passes and the cascade map cache (issue 11
+// items 2 and 3), and the naive path the benchmarks compare them with.
+#include "renderer/csm/caster_culling.h"
+#include "renderer/csm/culling.h"
+#include "renderer/render/renderer.h"
+
+#include <glm/common.hpp>
+
+namespace st {
+namespace {
+
+// Triangles of cluster k whose own light-space bounds meet the light box.
+std::size_t trianglesMeetingBox(const Scene& scene, const ClusteredScene& cs, const Cluster& k,
+                                const csm::CascadeFit& fit, bool pancake) {
+    std::size_t n = 0;
+    for (std::uint32_t t = k.firstIndex; t + 3 <= k.firstIndex + k.indexCount; t += 3) {
+        csm::Aabb b;
+        for (std::uint32_t v = 0; v < 3; ++v) {
+            const glm::vec3 p(fit.lsView * glm::vec4(scene.vertices[cs.indices[t + v]].position, 1.0f));
+            b.min = v == 0 ? p : glm::min(b.min, p);
+            b.max = v == 0 ? p : glm::max(b.max, p);
+        }
+        n += csm::lsBoundsMeetBox(b, fit.lsBox, pancake);
+    }
+    return n;
+}
+
+}  // namespace
+
+void Renderer::cascadeCasters(const Settings& s, int i, CascadeStats& cs) {
+    const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
+    const csm::CascadeFit fit = plan_.cascades[std::size_t(i)];
+    const csm::CasterVolume volume = csm::casterVolume(s, plan_.camera, plan_.splits, i, fit);
+    const ClusteredScene& clustered = scene_.clustered();
+    const std::vector<Cluster>& clusters = clustered.clusters;
+    batches_.clear();
+    std::vector<std::size_t> inBox;  // clusters the box test alone keeps: the lower bound's candidates
+    for (std::size_t k = 0; k < clusters.size(); ++k) {
+        if (!csm::lsBoundsMeetBox(csm::transformAabb(fit.lsView, clusters[k].wsBounds), fit.lsBox, pancake)) continue;
+        inBox.push_back(k);
+        if (csm::casterMayShadow(clusters[k].wsBounds, volume)) batches_.add(clusters, k);
+    }
+    const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.layers(), shadowMaps_.size()};
+    const CascadeDecision d = cache_.decide(i, key);
+    if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));
+    CascadeStats& held = held_[std::size_t(i)];
+    if (d.redraw) {
+        shadowMaps_.attachLayer(i);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        viewBlock_.upload({fit.viewProj});
+        scene_.drawBatches(batches_, FaceCulling::Keep);
+        cache_.drawn(i, key, fit);
+        held = CascadeStats{};
+        held.casterDraws = int(batches_.batches().size());
+        held.casterTriangles = batches_.triangleCount();
+        held.casterClusters = batches_.clusterCount();
+        if (options_.lowerBound)
+            for (std::size_t k : inBox)
+                held.lowerBoundTriangles += trianglesMeetingBox(scene_.scene(), clustered, clusters[k], fit, pancake);
+    } else {
+        // The map keeps what it was drawn with: sample it through that fit (only an update
+        // interval makes it differ from this frame's), over this frame's depth range.
+        csm::CascadeFit kept = cache_.heldFit(i);
+        kept.vsNear = fit.vsNear;
+        kept.vsFar = fit.vsFar;
+        plan_.cascades[std::size_t(i)] = kept;
+    }
+    cs.casterDraws = held.casterDraws;
+    cs.casterTriangles = held.casterTriangles;
+    cs.casterClusters = held.casterClusters;
+    cs.lowerBoundTriangles = held.lowerBoundTriangles;
+    cs.casterClustersTotal = clusters.size();
+    cs.redrawn = d.redraw;
+    cs.mapReason = d.reason;
+}
+
+void Renderer::naiveCascadeCasters(const Settings& s, int i, CascadeStats& cs) {
+    const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
+    const csm::CascadeFit& fit = plan_.cascades[std::size_t(i)];
+    shadowMaps_.attachLayer(i);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    viewBlock_.upload({fit.viewProj});
+    for (const DrawItem& item : scene_.scene().draws) {
+        if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
+        scene_.draw(item, FaceCulling::Keep);
+        ++cs.casterDraws;
+        cs.casterTriangles += item.indexCount / 3;
+    }
+    cs.redrawn = true;
+    cs.mapReason = "naive: every map every frame";
+}
+
+void Renderer::drawVisible(const glm::mat4& viewProj) {
+    mainTriangles_ = 0;
+    mainDraws_ = 0;
+    if (options_.naive) {
+        scene_.bindGeometry();
+        for (const DrawItem& item : scene_.scene().draws) {
+            scene_.draw(item, FaceCulling::PerMaterial);
+            mainTriangles_ += item.indexCount / 3;
+            ++mainDraws_;
+        }
+        return;
+    }
+    const auto planes = csm::frustumPlanes(viewProj);
+    const std::vector<Cluster>& clusters = scene_.clustered().clusters;
+    batches_.clear();
+    for (std::size_t k = 0; k < clusters.size(); ++k)
+        if (csm::aabbInFrustum(clusters[k].wsBounds, planes)) batches_.add(clusters, k);
+    scene_.bindClusteredGeometry();
+    scene_.drawBatches(batches_, FaceCulling::PerMaterial);
+    mainTriangles_ = batches_.triangleCount();
+    mainDraws_ = int(batches_.batches().size());
+}
+
+}  // namespace st
