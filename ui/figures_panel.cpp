@@ -19,9 +19,9 @@ std::string splitList(const FrameStats& stats) {
 
 // Reach toward the sun beyond the slice, and the least that keeps every caster (the audit).
 std::string zExtensionText(const CascadeStats& c) {
-    const std::string minimal = "min " + formatLength(c.zExtensionMinimal);
-    if (std::isinf(c.zExtensionUsed)) return "pancake (" + minimal + ")";
-    return formatLength(c.zExtensionUsed) + " (" + minimal + ")";
+    const std::string minimal = formatLength(c.zExtensionMinimal);
+    if (std::isinf(c.zExtensionUsed)) return "pancake / " + minimal;
+    return formatLength(c.zExtensionUsed) + " / " + minimal;
 }
 
 // What the split scheme divided and, with depth bounds, the depths the camera saw.
@@ -49,7 +49,7 @@ void geometryRow(int index, const CascadeStats& c) {
     ImGui::Text("%s", formatLength(c.texelWorldSize).c_str());
     ImGui::TableNextColumn();
     if (c.zExtensionCuts)
-        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.2f, 1.0f), "%s cuts", zExtensionText(c).c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.2f, 1.0f), "%s!", zExtensionText(c).c_str());
     else
         ImGui::Text("%s", zExtensionText(c).c_str());
 }
@@ -75,7 +75,7 @@ void headers(std::initializer_list<const char*> names) {
 
 void geometryTable(const FrameStats& stats) {
     if (!ImGui::BeginTable("cascadeGeometry", 6, kTableFlags)) return;
-    headers({"#", "view depth", "light box x*y", "z range", "texel", "z extension"});
+    headers({"#", "view depth", "light box x*y", "z range", "texel", "z ext / min"});
     for (std::size_t i = 0; i < stats.cascades.size(); ++i) geometryRow(static_cast<int>(i), stats.cascades[i]);
     ImGui::EndTable();
 }
