@@ -37,6 +37,10 @@ int cascadeOf(float vsDepth) {
     return -1;
 }
 
+// Each invocation reduces a TILE x TILE block of texels in registers first: one set of shared
+// atomics per block, not per texel (atomics are what llvmpipe pays for).
+#define TILE 4
+
 void main() {
     uint li = gl_LocalInvocationIndex;
     if (li < 3u * uint(ST_MAX_CASCADES)) {
@@ -50,30 +54,56 @@ void main() {
         sDepth[2] = 0u;
     }
     barrier();
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (p.x < reduceWidth && p.y < reduceHeight) {
-        float d = texelFetch(uDepth, p, 0).r;
-        if (d < 1.0) {
+    float dMin = 3.4e38, dMax = -3.4e38;
+    uint seen = 0u;
+    vec3 lo[ST_MAX_CASCADES];
+    vec3 hi[ST_MAX_CASCADES];
+    uint held[ST_MAX_CASCADES];
+    for (int c = 0; c < ST_MAX_CASCADES; ++c) {
+        lo[c] = vec3(3.4e38);
+        hi[c] = vec3(-3.4e38);
+        held[c] = 0u;
+    }
+    ivec2 base = ivec2(gl_GlobalInvocationID.xy) * TILE;
+    for (int y = 0; y < TILE; ++y) {
+        for (int x = 0; x < TILE; ++x) {
+            ivec2 p = base + ivec2(x, y);
+            if (p.x >= reduceWidth || p.y >= reduceHeight) continue;
+            float d = texelFetch(uDepth, p, 0).r;
+            if (d >= 1.0) continue;
             // The pixel centre back through the camera: NDC, then view space (conventions.h).
             vec2 ndc = (vec2(p) + 0.5) / vec2(reduceWidth, reduceHeight) * 2.0 - 1.0;
             vec4 vs = reduceInvProj * vec4(ndc, d * 2.0 - 1.0, 1.0);
             vs /= vs.w;
             float vsDepth = -vs.z;
             if (reduceMode == 0) {
-                atomicMin(sDepth[0], orderedKey(vsDepth));
-                atomicMax(sDepth[1], orderedKey(vsDepth));
-                atomicAdd(sDepth[2], 1u);
+                dMin = min(dMin, vsDepth);
+                dMax = max(dMax, vsDepth);
+                ++seen;
             } else {
                 int c = cascadeOf(vsDepth);
-                if (c >= 0) {
-                    vec3 ls = (reduceVsToLs * vec4(vs.xyz, 1.0)).xyz;
-                    for (int k = 0; k < 3; ++k) {
-                        atomicMin(sMin[3 * c + k], orderedKey(ls[k]));
-                        atomicMax(sMax[3 * c + k], orderedKey(ls[k]));
-                    }
-                    atomicAdd(sCount[c], 1u);
-                }
+                if (c < 0) continue;
+                vec3 ls = (reduceVsToLs * vec4(vs.xyz, 1.0)).xyz;
+                lo[c] = min(lo[c], ls);
+                hi[c] = max(hi[c], ls);
+                ++held[c];
             }
+        }
+    }
+    if (reduceMode == 0) {
+        if (seen > 0u) {
+            atomicMin(sDepth[0], orderedKey(dMin));
+            atomicMax(sDepth[1], orderedKey(dMax));
+            atomicAdd(sDepth[2], seen);
+        }
+    } else {
+        for (int c = 0; c < reduceCascades; ++c) {
+            if (held[c] == 0u) continue;
+            for (int k = 0; k < 3; ++k) {
+                atomicMin(sMin[3 * c + k], orderedKey(lo[c][k]));
+                atomicMax(sMax[3 * c + k], orderedKey(hi[c][k]));
+            }
+            atomicAdd(sCount[c], held[c]);
         }
     }
     barrier();

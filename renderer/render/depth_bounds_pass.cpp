@@ -20,7 +20,7 @@ struct DepthBoundsPass::Result {
 
 namespace {
 
-constexpr int kGroupSize = 16;  // local_size_x/y of the shader
+constexpr int kGroupTexels = 16 * 4;  // local_size_x/y of the shader times its TILE
 
 // Inverse of the shader's orderedKey().
 float fromKey(std::uint32_t key) {
@@ -56,8 +56,8 @@ DepthBoundsPass::Result DepthBoundsPass::run(GLuint depth, const gpu_if::ReduceB
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ST_STORAGE_REDUCE, result_.id());
     glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, depth);
     glUseProgram(program_.id());
-    glDispatchCompute(GLuint((block.reduceWidth + kGroupSize - 1) / kGroupSize),
-                      GLuint((block.reduceHeight + kGroupSize - 1) / kGroupSize), 1);
+    glDispatchCompute(GLuint((block.reduceWidth + kGroupTexels - 1) / kGroupTexels),
+                      GLuint((block.reduceHeight + kGroupTexels - 1) / kGroupTexels), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(result_.id(), 0, sizeof r, &r);
     glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, 0);
