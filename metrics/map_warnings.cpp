@@ -33,6 +33,18 @@ std::string likelyFix(const Settings& s, const FrameStats& stats, std::optional<
     return "a larger cascades.mapSize (" + std::to_string(c.mapSize) + ")";
 }
 
+// A texel too large for its own sake (a far cascade spread over a long slice): a shorter range
+// or more texels, not a higher lambda (which lengthens the far slices).
+std::string texelFix(const Settings& s, const FrameStats& stats, std::optional<float> farthestSeen, std::size_t cascade) {
+    const CascadeSettings& c = s.cascades;
+    const bool fitted = c.depthBounds == DepthBounds::Fit && c.scheme != SplitScheme::Manual;
+    if (!fitted && farthestSeen && stats.splitEnd > 1.5f * *farthestSeen) return likelyFix(s, stats, farthestSeen);
+    const std::string map = "a larger cascades.mapSize (" + std::to_string(c.mapSize) + ")";
+    if (cascade + 1 == stats.cascades.size())
+        return "a shorter cascades.shadowDistance (the last cascade ends at " + metres(stats.splitEnd) + ") or " + map;
+    return "more cascades (cascades.count " + std::to_string(c.count) + ") or " + map;
+}
+
 }  // namespace
 
 std::optional<float> farthestSampleDepth(const MeasureSamples& samples, const glm::mat4& vsView) {
@@ -59,7 +71,7 @@ std::vector<std::string> wastedMapWarnings(const Settings& s, const FrameStats& 
                           number(limits.maxPixelsPerTexel) + "); likely fix: " + likelyFix(s, stats, farthestSeen));
         else if (texel > limits.maxTexelMetres)
             out.push_back(cascade + "texel " + metres(texel) + " is larger than " + metres(limits.maxTexelMetres) +
-                          "; likely fix: " + likelyFix(s, stats, farthestSeen));
+                          "; likely fix: " + texelFix(s, stats, farthestSeen, i));
     }
     return out;
 }
