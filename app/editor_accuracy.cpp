@@ -1,5 +1,6 @@
 #include "app/editor_accuracy.h"
 
+#include "metrics/map_warnings.h"
 #include "metrics/measure_session.h"
 
 #include <algorithm>
@@ -36,6 +37,20 @@ std::string percent(double share) {
     return text;
 }
 
+// The wasted-map warnings of the frame read back (the same rule and limits as `render`).
+std::vector<std::string> wastedMaps(const csm::CascadePlan& plan, const Settings& s, const MeasureSamples& samples) {
+    FrameStats stats;
+    stats.splitBegin = plan.splitRange.begin;
+    stats.splitEnd = plan.splitRange.end;
+    for (const csm::CascadeFit& c : plan.cascades) {
+        CascadeStats cs;
+        cs.texelWorldSize = c.texelWorldSize;
+        stats.cascades.push_back(cs);
+    }
+    return metrics::wastedMapWarnings(s, stats, metrics::texelDensity(samples, s.cascades.count),
+                                      metrics::farthestSampleDepth(samples, plan.vsView));
+}
+
 }  // namespace
 
 EditorAccuracy::EditorAccuracy() : worker_(rayThreads()) {}
@@ -64,6 +79,7 @@ void EditorAccuracy::start(Renderer& r, const Settings& s, const std::shared_ptr
         frame.mapSize = s.cascades.mapSize;
         frame.cascadeCount = s.cascades.count;
         frame.wsEye = s.camera.position;
+        pendingWarnings_ = wastedMaps(r.plan(), s, frame.samples);
         worker_.submit(std::move(frame));
     } catch (const std::exception& e) {
         view_.error = e.what();
@@ -92,6 +108,7 @@ void EditorAccuracy::collect() {
     view_.cascades.clear();
     for (const metrics::ErrorCounts& c : a.report.cascades) view_.cascades.push_back(toUi(c));
     view_.beyond = toUi(a.report.beyond);
+    view_.warnings = pendingWarnings_;
     overlay_.upload(a.overlay.width, a.overlay.height, a.overlay.pixels);
     classes_ = a.report.classes;
     schedule_.finished(true);

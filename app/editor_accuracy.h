@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace st::app {
 
@@ -47,6 +48,7 @@ private:
     std::optional<Settings> last_;       // the previous frame's settings, to see a change
     bool wanted_ = false;
     double readBackSeconds_ = 0.0;       // of the job in flight
+    std::vector<std::string> pendingWarnings_;  // of the job in flight
     ui::AccuracyView view_;              // figures (Done) or error (Failed) of the last job
     std::vector<metrics::PixelClass> classes_;  // of the last job that was done
 };

@@ -1,5 +1,6 @@
 // `shadowtune measure`: command-line options of the measurement command.
 #include "app/commands.h"
+#include "app/warning_options.h"
 #include "app/measure_command.h"
 #include "app/size_option.h"
 
@@ -42,6 +43,7 @@ void addMeasureCommand(CLI::App& cli, int& exitCode) {
         ->capture_default_str();
     cmd->add_flag("--no-flicker", args->noFlicker, "Skip replaying the presets' camera paths");
     cmd->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
+    addWarningOptions(*cmd, args->opt.warningLimits);
     cmd->callback([args, &exitCode] {
         args->opt.flicker = !args->noFlicker;
         exitCode = applySize(*args) ? runMeasure(args->opt) : 2;

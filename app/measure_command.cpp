@@ -90,11 +90,13 @@ PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset
     metrics::MeasureOptions mo;
     mo.costFrames = opt.costFrames;
     mo.flicker = opt.flicker;
+    mo.warningLimits = opt.warningLimits;
     mo.progress = [&name](const std::string& line) {
         std::printf("  %s: %s\n", name.c_str(), line.c_str());
         std::fflush(stdout);
     };
     auto m = std::make_shared<const metrics::PresetMeasurement>(session.measure(s, preset.parent_path(), mo));
+    for (const std::string& w : m->warnings) std::fprintf(stderr, "%s: warning: %s\n", preset.string().c_str(), w.c_str());
     return [m, name, dir = opt.outDir / name] {
         writeOutputs(*m, name, dir);
         printSummary(*m, name, dir);

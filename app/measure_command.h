@@ -1,4 +1,6 @@
 #pragma once
+#include "metrics/map_warnings.h"
+
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -11,6 +13,7 @@ struct MeasureCommandOptions {
     std::optional<int> width, height;  // override every preset's output size
     int costFrames = 5;                // timed frames for the cost figures, after a warm-up
     bool flicker = true;               // replay each preset's camera path
+    metrics::MapWarningLimits warningLimits;  // when a cascade's map counts as wasted (stderr)
 #ifdef NDEBUG
     bool debugContext = false;         // KHR_debug; any serious message fails the preset
 #else

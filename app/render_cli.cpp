@@ -1,6 +1,7 @@
 // `shadowtune render`: command-line options of headless replay.
 #include "app/commands.h"
 #include "app/render_command.h"
+#include "app/warning_options.h"
 #include "renderer/settings/enum_names.h"
 
 #include <cstdio>
@@ -51,6 +52,7 @@ void addRenderCommand(CLI::App& cli, int& exitCode) {
     render->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
     render->add_option("--frames", args->opt.frames, "Render each preset N times and print median times (benchmark)")
         ->check(CLI::Range(1, 10000));
+    addWarningOptions(*render, args->opt.warningLimits);
     render->callback([args, &exitCode] { exitCode = applyOverrides(*args) ? runRender(args->opt) : 2; });
 }
 

@@ -2,6 +2,7 @@
 
 #include "app/preset_batch.h"
 
+#include "metrics/measure_session.h"
 #include "renderer/gpu/gl.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/renderer.h"
@@ -62,7 +63,7 @@ FrameStats benchmark(Renderer& r, const Settings& s, int frames, const fs::path&
 }
 
 // The GL work of one preset; the returned writer saves the image and statistics.
-PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache<>& cache) {
+PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache<>& cache, MeasurePass& pass) {
     Settings s = loadPreset(preset);
     if (opt.view) s.output.view = *opt.view;
     if (opt.width) s.output.width = *opt.width;
@@ -72,6 +73,8 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
     FrameStats stats = r.render(s);
     if (opt.frames > 1) stats = benchmark(r, s, opt.frames, preset);
     Rgba8Image img{r.width(), r.height(), r.readRgba8()};
+    stats.warnings = metrics::frameWarnings(r, pass, s, stats, opt.warningLimits);
+    for (const std::string& w : stats.warnings) std::fprintf(stderr, "%s: warning: %s\n", preset.string().c_str(), w.c_str());
     return [outDir = opt.outDir, preset, s, stats, img = std::move(img)] {
         const std::string stem = preset.stem().string();
         const fs::path png = outDir / (stem + ".png");
@@ -89,7 +92,8 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
 int runRender(const RenderOptions& opt) {
     return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt]() -> PresetWork {
         auto cache = std::make_shared<SceneCache<>>();
-        return [&opt, cache](const fs::path& preset) { return renderOne(opt, preset, *cache); };
+        auto pass = std::make_shared<MeasurePass>();
+        return [&opt, cache, pass](const fs::path& preset) { return renderOne(opt, preset, *cache, *pass); };
     });
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "metrics/map_warnings.h"
 #include "renderer/settings/settings.h"
 
 #include <filesystem>
@@ -19,6 +20,7 @@ struct RenderOptions {
     bool debugContext = true;        // always on in debug builds: GL errors are bugs
 #endif
     int frames = 1;                  // > 1: render repeatedly and report median times
+    metrics::MapWarningLimits warningLimits;  // when a cascade's map counts as wasted (stderr)
 };
 
 // Renders each preset to OUT/<name>.png and OUT/<name>.json, one line per image on stdout.

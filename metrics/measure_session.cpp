@@ -1,6 +1,7 @@
 #include "metrics/measure_session.h"
 
 #include "metrics/camera_path.h"
+#include "metrics/map_warnings.h"
 #include "metrics/resolution_check.h"
 #include "renderer/csm/cascade_plan.h"
 
@@ -40,8 +41,10 @@ MeasurePass& MeasureSession::pass() {
     return *pass_;
 }
 
-MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer) {
-    r.render(cascadeSettings);
+MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer,
+                           FrameStats* stats) {
+    FrameStats frame = r.render(cascadeSettings);
+    if (stats) *stats = std::move(frame);
     return pass.run(r, cascadeSettings, observerViewProj(observer));
 }
 
@@ -74,6 +77,16 @@ CostReport measureCost(Renderer& r, const Settings& s, int frames) {
     return summariseCost(timed, covered, s.cascades.mapSize);
 }
 
+std::vector<std::string> frameWarnings(Renderer& r, MeasurePass& pass, const Settings& s, const FrameStats& stats,
+                                       const MapWarningLimits& limits) {
+    std::vector<std::string> out = zExtensionWarnings(stats);
+    const MeasureSamples samples = pass.run(r, s, observerViewProj(s));
+    const DensityReport density = texelDensity(samples, s.cascades.count);
+    for (std::string& w : wastedMapWarnings(s, stats, density, farthestSampleDepth(samples, r.plan().vsView), limits))
+        out.push_back(std::move(w));
+    return out;
+}
+
 namespace {
 // The truth of `samples`, traced unless the entry's last frame had exactly these inputs.
 std::vector<std::uint8_t> cachedTruth(MeasureSession::SceneEntry& e, const MeasureSamples& samples, glm::vec3 toSun,
@@ -96,7 +109,7 @@ std::vector<std::uint8_t> cachedTruth(MeasureSession::SceneEntry& e, const Measu
 // Truth, accuracy and texel density of the frame `s` shows: everything but cost and flicker.
 void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
     auto t0 = Clock::now();
-    m.samples = sampleFrame(*e.renderer, pass, s, s);
+    m.samples = sampleFrame(*e.renderer, pass, s, s, &m.frame);
     m.timings.measurePassMs = msSince(t0);
     t0 = Clock::now();
     m.truth = cachedTruth(e, m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
@@ -119,6 +132,11 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
         m.timings.bvhMs = e.truth->buildMs();
     }
     measureStill(e, pass(), s, m);
+    m.warnings = zExtensionWarnings(m.frame);
+    const std::optional<float> farthest = farthestSampleDepth(m.samples, e.renderer->plan().vsView);
+    for (std::string& w : wastedMapWarnings(s, m.frame, m.density, farthest, opt.warningLimits))
+        m.warnings.push_back(std::move(w));
+    m.frame.warnings = m.warnings;
     report(opt, "ground truth " + seconds(m.timings.groundTruthMs) + " (BVH " + seconds(m.timings.bvhMs) + ")");
     if (opt.cost) {
         const auto t0 = Clock::now();

@@ -8,6 +8,7 @@
 #include "metrics/cost.h"
 #include "metrics/flicker.h"
 #include "metrics/ground_truth.h"
+#include "metrics/map_warnings.h"
 #include "metrics/texel_density.h"
 #include "renderer/render/measure_pass.h"
 #include "renderer/render/renderer.h"
@@ -45,6 +46,8 @@ struct PresetMeasurement {
     std::optional<FlickerReport> flicker;  // when the preset has a path
     std::vector<float> flickerStdDev;      // per pixel, with flicker
     std::optional<CostReport> cost;
+    FrameStats frame;                   // the measured frame's statistics (depth bounds, audit)
+    std::vector<std::string> warnings;  // wasted maps and cut casters (metrics/map_warnings.h)
     MeasureTimings timings;
 };
 
@@ -52,6 +55,7 @@ struct MeasureOptions {
     bool cost = true;
     int costFrames = 5;   // timed frames, after one warm-up frame
     bool flicker = true;  // replay s.path when it has frames
+    MapWarningLimits warningLimits;  // when a cascade's map counts as wasted
     std::function<void(const std::string&)> progress;  // one line per stage, if set
 };
 
@@ -87,12 +91,17 @@ private:
 // The per-frame pieces, for tests and tools that need only one figure.
 // Renders `cascadeSettings` (its camera drives the cascades) and reads back what the observer
 // of `observer` sees.
-MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer);
+MeasureSamples sampleFrame(Renderer& r, MeasurePass& pass, const Settings& cascadeSettings, const Settings& observer,
+                           FrameStats* stats = nullptr);
 // Flicker of s.path seen by s.camera; `stdDev` receives the per-pixel hard standard deviation.
 // With `truth` (the still truth of s.camera's pixels) the report has each frame's misclassified share.
 FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, std::vector<float>* stdDev = nullptr,
                              const std::vector<std::uint8_t>& truth = {});
 CostReport measureCost(Renderer& r, const Settings& s, int frames);
+// The warnings of r's last render(s), whose statistics are `stats`: its z-extension audit, and
+// texel density read back by one measurement pass (what `render` prints without a ground truth).
+std::vector<std::string> frameWarnings(Renderer& r, MeasurePass& pass, const Settings& s, const FrameStats& stats,
+                                       const MapWarningLimits& limits);
 // Truth, accuracy and texel density of the frame `s` shows into `m` (the still part of
 // MeasureSession::measure; the entry's BVH must exist).
 void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m);

@@ -87,6 +87,8 @@ OJson toJson(const PresetMeasurement& m, const std::string& presetName) {
             {"texelDensity", texelDensityJson(m.density)},
             {"flicker", m.flicker ? flickerJson(*m.flicker) : OJson(nullptr)},
             {"cost", m.cost ? costJson(*m.cost) : OJson(nullptr)},
+            {"frame", OJson::parse(toJsonText(m.frame))},
+            {"warnings", m.warnings},
             {"timings", timingsJson(m.timings)}};
     return j;
 }

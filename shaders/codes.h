@@ -18,7 +18,8 @@
 #define ST_FIT_CASCADE 0
 #define ST_FIT_SCENE 1
 #define ST_FIT_SPHERE 2
-#define ST_FIT_COUNT 3
+#define ST_FIT_SAMPLES 3
+#define ST_FIT_COUNT 4
 
 // ZExtension
 #define ST_ZEXT_NONE 0
@@ -26,6 +27,11 @@
 #define ST_ZEXT_SCENE_BOUNDS 2
 #define ST_ZEXT_PANCAKE 3
 #define ST_ZEXT_COUNT 4
+
+// DepthBounds
+#define ST_DEPTH_BOUNDS_OFF 0
+#define ST_DEPTH_BOUNDS_FIT 1
+#define ST_DEPTH_BOUNDS_COUNT 2
 
 // Selection
 #define ST_SELECT_INTERVAL 0

@@ -22,12 +22,17 @@
 #define ST_BLOCK_CASCADES 2
 #define ST_BLOCK_MATERIAL 3
 #define ST_BLOCK_OVERLAY 4
+#define ST_BLOCK_REDUCE 5
 
 // Texture units.
 #define ST_BINDING_SHADOW_NEAREST 0  // depth array with hardware compare, nearest: hard shadows
 #define ST_BINDING_SHADOW_LINEAR 1   // same texture, linear compare: 2x2 PCF per tap
 #define ST_BINDING_BASE_COLOR 2
 #define ST_BINDING_DEPTH_VIEW 3      // a depth array read raw (no compare) by depth_view.frag
+#define ST_BINDING_REDUCE_DEPTH 4    // the camera's depth buffer, read by depth_bounds_comp.glsl
+
+// Shader storage binding points.
+#define ST_STORAGE_REDUCE 0          // depth_bounds_comp.glsl's result (renderer/render/depth_bounds_pass.cpp)
 
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws
@@ -68,7 +73,7 @@
     M(float, biasSlope)    /* texels per unit tan(angle to the sun) */                            \
     M(float, normalOffset) /* texels */                                                           \
     M(int, receiverPlane)  /* bool */                                                             \
-    M(int, cascadePad0)                                                                           \
+    M(float, fadeBand)     /* fraction of the last cascade's range faded to lit at its far end */ \
     M(int, cascadePad1)                                                                           \
     A(CascadeData, cascade, ST_MAX_CASCADES)
 
@@ -86,6 +91,16 @@
     M(int, layer)          /* depth view: the array layer shown */                                \
     M(float, depthLo)      /* depth view: stored depth shown brightest */                         \
     M(float, depthHi)      /* depth view: stored depth shown darkest */
+
+// The depth-bounds reduction (depth_bounds_comp.glsl): how a depth texel becomes a sample.
+#define ST_REDUCE_BLOCK(M, A)                                                                     \
+    M(mat4, reduceInvProj)  /* camera clip -> vs */                                               \
+    M(mat4, reduceVsToLs)   /* vs -> light view (ls) */                                           \
+    A(vec4, reduceSplits, 3) /* split depths 0..count, four per vec4 */                           \
+    M(int, reduceMode)      /* 0: view-depth range; 1: ls bounds per cascade */                   \
+    M(int, reduceCascades)  /* cascades to reduce in mode 1 */                                    \
+    M(int, reduceWidth)     /* depth texture size, texels */                                      \
+    M(int, reduceHeight)
 
 #ifdef __cplusplus
 // ---------------------------------------------------------------------------------------------
@@ -111,6 +126,7 @@ struct alignas(16) ViewBlock { ST_VIEW_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 struct alignas(16) CascadeBlock { ST_CASCADE_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 struct alignas(16) MaterialBlock { ST_MATERIAL_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 struct alignas(16) OverlayBlock { ST_OVERLAY_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) ReduceBlock { ST_REDUCE_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 #undef ST_CPP_MEMBER
 #undef ST_CPP_ARRAY
 
@@ -150,6 +166,7 @@ ST_BLOCK_MEMBERS(CascadeData, ST_CASCADE_DATA)
 ST_BLOCK_MEMBERS(CascadeBlock, ST_CASCADE_BLOCK)
 ST_BLOCK_MEMBERS(MaterialBlock, ST_MATERIAL_BLOCK)
 ST_BLOCK_MEMBERS(OverlayBlock, ST_OVERLAY_BLOCK)
+ST_BLOCK_MEMBERS(ReduceBlock, ST_REDUCE_BLOCK)
 #undef ST_BLOCK_MEMBERS
 #undef ST_INFO_M
 #undef ST_INFO_A
@@ -166,6 +183,7 @@ layout(std140, binding = ST_BLOCK_VIEW) uniform ViewBlock { ST_VIEW_BLOCK(ST_GLS
 layout(std140, binding = ST_BLOCK_CASCADES) uniform CascadeBlock { ST_CASCADE_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
 layout(std140, binding = ST_BLOCK_MATERIAL) uniform MaterialBlock { ST_MATERIAL_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
 layout(std140, binding = ST_BLOCK_OVERLAY) uniform OverlayBlock { ST_OVERLAY_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_REDUCE) uniform ReduceBlock { ST_REDUCE_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
 #undef ST_GLSL_MEMBER
 #undef ST_GLSL_ARRAY
 #endif

@@ -110,6 +110,14 @@ float blendWeight(int i, float vsDepth, vec3 ts) {
     return 1.0 - clamp(f / blendBand, 0.0, 1.0);
 }
 
+// Far-edge fade of the last cascade (as Filament's shadowFarAttenuation, Godot's fade_start,
+// Unreal's FadeOutFraction): 0 before the band, 1 (fully lit) at the end of the shadow range.
+float fadeWeight(int i, float vsDepth) {
+    if (fadeBand <= 0.0 || i != cascadeCount - 1) return 0.0;
+    float band = fadeBand * (cascade[i].vsFar - cascade[i].vsNear);
+    return clamp((vsDepth - (cascade[i].vsFar - band)) / band, 0.0, 1.0);
+}
+
 ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth) {
     int c = selection == ST_SELECT_INTERVAL ? selectInterval(vsDepth) : selectMap(wsPos, wsNormal);
     // Coordinates and derivatives for c and c+1 are computed unconditionally: derivatives are
@@ -125,5 +133,6 @@ ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth)
     float f = sampleCascade(c, ts, slope, tanTheta);
     float w = blendWeight(c, vsDepth, ts);
     if (w > 0.0) f = mix(f, sampleCascade(cn, tsNext, slopeNext, tanTheta), w);
+    f = mix(f, 1.0, fadeWeight(c, vsDepth));
     return ShadowResult(f, c);
 }

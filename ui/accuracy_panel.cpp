@@ -74,6 +74,8 @@ void figures(UiFrame& f) {
     recordItem(f.state.rects, "accuracy.figures");
     drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
     cascadeTable(f);
+    for (const std::string& w : a.warnings) ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.2f, 1.0f), "%s", w.c_str());
+    if (!a.warnings.empty()) recordItem(f.state.rects, "accuracy.warnings");
 }
 
 void stateLine(UiFrame& f) {

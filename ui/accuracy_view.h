@@ -43,6 +43,7 @@ struct AccuracyView {
     AccuracyCounts all;
     std::vector<AccuracyCounts> cascades;
     AccuracyCounts beyond;      // past the shadow distance: drawn lit
+    std::vector<std::string> warnings;  // Done: wasted maps, each with its likely fix (metrics/map_warnings.h)
 };
 
 }  // namespace st::ui

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -14,6 +15,24 @@ namespace {
 std::string splitList(const FrameStats& stats) {
     std::string text;
     for (const float split : stats.splits) text += (text.empty() ? "" : " | ") + formatLength(split);
+    return text;
+}
+
+// Reach toward the sun beyond the slice, and the least that keeps every caster (the audit).
+std::string zExtensionText(const CascadeStats& c) {
+    const std::string minimal = formatLength(c.zExtensionMinimal);
+    if (std::isinf(c.zExtensionUsed)) return "pancake / " + minimal;
+    return formatLength(c.zExtensionUsed) + " / " + minimal;
+}
+
+// What the split scheme divided and, with depth bounds, the depths the camera saw.
+std::string depthBoundsLine(const FrameStats& stats) {
+    const DepthBoundsStats& d = stats.depthBounds;
+    std::string text = "Depth bounds " + d.mode + ": splits divide " + formatLength(stats.splitBegin) + " - " +
+                       formatLength(stats.splitEnd);
+    if (d.reduced)
+        text += d.seen ? "; seen " + formatLength(d.vsMin) + " - " + formatLength(d.vsMax) + " (" + d.source + ")"
+                       : "; nothing seen (" + d.source + ")";
     return text;
 }
 
@@ -29,6 +48,11 @@ void geometryRow(int index, const CascadeStats& c) {
     ImGui::Text("%s", formatLength(c.lsExtent.z).c_str());
     ImGui::TableNextColumn();
     ImGui::Text("%s", formatLength(c.texelWorldSize).c_str());
+    ImGui::TableNextColumn();
+    if (c.zExtensionCuts)
+        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.2f, 1.0f), "%s!", zExtensionText(c).c_str());
+    else
+        ImGui::Text("%s", zExtensionText(c).c_str());
 }
 
 void costRow(int index, const CascadeStats& c) {
@@ -57,8 +81,8 @@ void headers(std::initializer_list<const char*> names) {
 }
 
 void geometryTable(const FrameStats& stats) {
-    if (!ImGui::BeginTable("cascadeGeometry", 5, kTableFlags)) return;
-    headers({"#", "view depth", "light box x*y", "z range", "texel"});
+    if (!ImGui::BeginTable("cascadeGeometry", 6, kTableFlags)) return;
+    headers({"#", "view depth", "light box x*y", "z range", "texel", "z ext / min"});
     for (std::size_t i = 0; i < stats.cascades.size(); ++i) geometryRow(static_cast<int>(i), stats.cascades[i]);
     ImGui::EndTable();
 }
@@ -96,6 +120,7 @@ void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& r
         return;
     }
     ImGui::TextWrapped("Splits: %s", splitList(*stats).c_str());
+    ImGui::TextWrapped("%s", depthBoundsLine(*stats).c_str());
     ImGui::Text("Shadow maps: %s   scene: %zu triangles", formatBytes(stats->shadowMapBytes).c_str(),
                 stats->sceneTriangles);
     geometryTable(*stats);

@@ -1,5 +1,6 @@
 #include "renderer/csm/cascade_plan.h"
 
+#include "renderer/csm/split_range.h"
 #include "renderer/csm/splits.h"
 
 #include <glm/trigonometric.hpp>
@@ -17,14 +18,8 @@ CameraParams cameraFromSettings(const CameraSettings& c, float aspect) {
     return p;
 }
 
-CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBounds) {
+std::vector<float> planSplits(const Settings& s, const std::optional<DepthRange>& seen, SplitRange* range) {
     const CascadeSettings& cs = s.cascades;
-    CascadePlan plan;
-    plan.camera = cameraFromSettings(s.camera, aspect);
-    plan.vsView = viewMatrix(plan.camera);
-    plan.csProj = projectionMatrix(plan.camera);
-    plan.wsLightDir = lightDirection(s.light.azimuth, s.light.elevation);
-
     SplitParams sp;
     sp.scheme = cs.scheme;
     sp.count = cs.count;
@@ -33,7 +28,31 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     sp.lambda = cs.lambda;
     sp.manual = cs.manualSplits;
     sp.shadowDistance = cs.shadowDistance;
-    plan.splits = computeSplits(sp);
+    if (cs.depthBounds == DepthBounds::Fit && cs.scheme != SplitScheme::Manual) {
+        computeSplits(sp);  // the settings' own errors first, named as the user wrote them
+        const SplitRange r = fittedSplitRange(sp.nearPlane, splitRangeEnd(sp.farPlane, sp.shadowDistance), seen);
+        sp.nearPlane = r.begin;
+        sp.farPlane = r.end;
+        sp.shadowDistance = 0.0f;
+    }
+    std::vector<float> z = computeSplits(sp);
+    if (range) *range = {z.front(), z.back()};
+    return z;
+}
+
+bool needsSampleBounds(const CascadeSettings& c) {
+    return c.depthBounds == DepthBounds::Fit || c.fit == FitMode::Samples;
+}
+
+CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBounds, const SampleBounds* samples) {
+    const CascadeSettings& cs = s.cascades;
+    CascadePlan plan;
+    plan.camera = cameraFromSettings(s.camera, aspect);
+    plan.vsView = viewMatrix(plan.camera);
+    plan.csProj = projectionMatrix(plan.camera);
+    plan.wsLightDir = lightDirection(s.light.azimuth, s.light.elevation);
+    plan.splits = planSplits(s, samples ? samples->depth : std::nullopt, &plan.splitRange);
+    plan.depthFitted = samples && cs.depthBounds == DepthBounds::Fit && cs.scheme != SplitScheme::Manual;
 
     FitParams fp;
     fp.fit = cs.fit;
@@ -42,8 +61,11 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.zExtensionDistance = cs.zExtensionDistance;
     fp.mapSize = cs.mapSize;
     fp.wsSceneBounds = wsSceneBounds;
-    for (int i = 0; i < cs.count; ++i)
+    for (int i = 0; i < cs.count; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        fp.lsSamples = samples && k < samples->lsCascade.size() ? samples->lsCascade[k] : std::nullopt;
         plan.cascades.push_back(fitCascade(plan.camera, plan.splits, i, plan.wsLightDir, fp));
+    }
     return plan;
 }
 

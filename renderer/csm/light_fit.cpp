@@ -81,6 +81,29 @@ SliceBox sphereBox(const CameraParams& cam, float vsNear, float vsFar, const glm
     return {{lsCentre - s.radius, lsCentre + s.radius}, glm::vec2(2.0f * s.radius)};
 }
 
+// SDSM (Lauritzen et al. 2011, section 3.2): the light box of the samples the cascade holds,
+// not of its whole slice. x,y padded by whole texels for the filter's taps and the normal
+// offset; z widened by 1% of its range so the farthest receiver is not on the far plane.
+SliceBox samplesBox(const Aabb& lsSamples, const SliceBox& slice, const FitParams& p) {
+    Aabb b = lsSamples;
+    const glm::vec2 size0 = glm::max(glm::vec2(b.extent()), glm::vec2(1e-3f));
+    const float m = static_cast<float>(p.mapSize);
+    // Padding k texels of the padded box on each side: size = size0 m / (m - 2k).
+    glm::vec2 size = size0 * (m / std::max(1.0f, m - 2.0f * p.samplePadTexels));
+    if (p.stabilize) {
+        // Steps of 1/16 of the slice's box: the size (so the texel) is the same over frames
+        // whose samples differ a little, and snapping then keeps the grid still.
+        const glm::vec2 step = glm::max(slice.size / 16.0f, glm::vec2(1e-3f));
+        size = glm::ceil(size / step) * step;
+    }
+    const glm::vec2 centre(b.center());
+    b.min.x = centre.x - 0.5f * size.x, b.max.x = centre.x + 0.5f * size.x;
+    b.min.y = centre.y - 0.5f * size.y, b.max.y = centre.y + 0.5f * size.y;
+    const float zPad = 0.01f * std::max(b.extent().z, 1e-2f);
+    b.min.z -= zPad, b.max.z += zPad;
+    return {b, size};
+}
+
 // Seed 001 texel snapping: min x,y moved down to whole texels, max = min + size, so the box only
 // ever moves by whole texels and a static caster rasterises to the same texels every frame.
 // Moving min down can uncover up to one texel at the max side, so the texel is size / (m - 1):
@@ -144,7 +167,12 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     out.vsFar = splits[i + 1];
     SliceBox box = p.fit == FitMode::Sphere ? sphereBox(cam, out.vsNear, out.vsFar, out.lsView)
                                             : cornerBox(cam, out.vsNear, out.vsFar, out.lsView);
+    if (p.fit == FitMode::Samples && p.lsSamples) {
+        box = samplesBox(*p.lsSamples, box, p);
+        out.fittedToSamples = true;
+    }
     if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize);
+    out.lsSlice = box.ls;
     const Aabb ls = extendZ(box.ls, out.lsView, p);
     out.lsBox = ls;
     // ls looks down -Z: the near plane distance is -max.z, the far one -min.z.

@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <span>
 
 namespace st::csm {
@@ -27,6 +28,10 @@ struct FitParams {
     float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
     int mapSize = 1024;               // texels per side
     Aabb wsSceneBounds;               // all casters; used by SceneBounds
+    // FitMode::Samples: the light-space bounds of the visible samples the cascade holds
+    // (depth_bounds.h); nullopt (no sample, or not reduced) falls back to the slice's box.
+    std::optional<Aabb> lsSamples;
+    float samplePadTexels = 2.0f;     // samples box grown by this many texels on each side (filter taps)
 };
 
 struct CascadeFit {
@@ -34,9 +39,11 @@ struct CascadeFit {
     glm::mat4 lsProj{1.0f};     // orthographic, ls box -> clip
     glm::mat4 viewProj{1.0f};   // lsProj * lsView: world -> light clip
     Aabb lsBox;                 // box in light view space; +Z toward the sun (max.z is the near side)
+    Aabb lsSlice;               // lsBox before the z extension: the receivers' own range
     float texelWorldSize = 0.0f;// metres per texel along x (== y for sphere fit)
     float vsNear = 0.0f;        // view depth range the cascade covers (scene fit: from camera near)
     float vsFar = 0.0f;
+    bool fittedToSamples = false;  // FitMode::Samples with samples: the box is theirs, not the slice's
 };
 
 // Fits cascade `index` (slice [splits[index], splits[index+1]] of the camera, or
@@ -44,6 +51,9 @@ struct CascadeFit {
 // - Cascade/Scene: tight AABB of the slice corners in ls (seed 000 crop matrix, seed 002).
 // - Sphere: a square box around the slice's bounding sphere, radius rounded up to 1/16 m so its
 //   size does not change when the camera rotates (seed 001).
+// - Samples: the box of the visible samples (SDSM, Lauritzen et al. 2011, section 3.2), padded
+//   by samplePadTexels; with stabilize its size is rounded up to 1/16 of the slice box's so it
+//   changes in steps, then snapped like the others.
 // - stabilize: min x,y moved down to a multiple of the texel size, max = min + size (seed 001).
 // - z: the slice's range, extended toward the sun by zExtensionDistance, or unioned with the
 //   scene bounds (seed 003, using transformAabb), or left as is for None/Pancake.

@@ -106,6 +106,23 @@ Program linkProgram(const std::string& vertexSrc, const std::string& fragmentSrc
     return prog;
 }
 
+Program linkComputeProgram(const std::string& computeSrc, const std::string& name) {
+    GLuint cs = compileStage(GL_COMPUTE_SHADER, computeSrc, name + ".comp");
+    Program prog(created(glCreateProgram()));
+    glAttachShader(prog.id(), cs);
+    glLinkProgram(prog.id());
+    glDeleteShader(cs);
+    GLint ok = 0;
+    glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = {};
+        glGetProgramInfoLog(prog.id(), sizeof log, nullptr, log);
+        throw std::runtime_error("program " + name + " failed to link:\n" + log);
+    }
+    glObjectLabel(GL_PROGRAM, prog.id(), -1, name.c_str());
+    return prog;
+}
+
 DebugGroup::DebugGroup(const char* name) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
 }

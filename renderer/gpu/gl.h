@@ -75,6 +75,9 @@ struct ShaderCompileError : std::runtime_error {
 Program linkProgram(const std::string& vertexSrc, const std::string& fragmentSrc,
                     const std::string& name);
 
+// A compute program from one stage; throws like linkProgram.
+Program linkComputeProgram(const std::string& computeSrc, const std::string& name);
+
 // Scoped KHR_debug group, shown in frame debuggers and in debug messages.
 class DebugGroup {
 public:

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace st {
 
 std::string toJsonText(const FrameStats& s) {
@@ -10,9 +12,21 @@ std::string toJsonText(const FrameStats& s) {
     j["height"] = s.height;
     j["sceneTriangles"] = s.sceneTriangles;
     j["splits"] = s.splits;
+    j["splitRange"] = {s.splitBegin, s.splitEnd};
+    auto& db = j["depthBounds"];
+    db["mode"] = s.depthBounds.mode;
+    db["reduced"] = s.depthBounds.reduced;
+    if (s.depthBounds.seen) {
+        db["seenNear"] = s.depthBounds.vsMin;
+        db["seenFar"] = s.depthBounds.vsMax;
+    } else {
+        db["seenNear"] = db["seenFar"] = nullptr;  // nothing reduced, or only background seen
+    }
+    db["source"] = s.depthBounds.source;
     j["shadowMapBytes"] = s.shadowMapBytes;
     j["gpuShadowMs"] = s.gpuShadowMs;
     j["gpuMainMs"] = s.gpuMainMs;
+    j["gpuDepthBoundsMs"] = s.gpuDepthBoundsMs;
     j["cpuMs"] = s.cpuMs;
     j["mainTriangles"] = s.mainTriangles;
     j["mainDraws"] = s.mainDraws;
@@ -31,8 +45,15 @@ std::string toJsonText(const FrameStats& s) {
         e["redrawn"] = c.redrawn;
         e["mapReason"] = c.mapReason;
         e["gpuMs"] = c.gpuMs;
+        e["samplesFitted"] = c.samplesFitted;
+        auto& z = e["zExtension"];
+        if (std::isinf(c.zExtensionUsed)) z["used"] = "pancake";
+        else z["used"] = c.zExtensionUsed;
+        z["minimal"] = c.zExtensionMinimal;
+        z["cuts"] = c.zExtensionCuts;
         arr.push_back(e);
     }
+    j["warnings"] = s.warnings;
     return j.dump(2) + "\n";
 }
 

@@ -25,20 +25,42 @@ struct CascadeStats {
     bool redrawn = true;           // this frame drew the map; false: the map from an earlier frame
     std::string mapReason;         // why it was redrawn or kept ("light matrix changed", "unchanged", ...)
     double gpuMs = 0.0;            // this cascade's depth pass
+    bool samplesFitted = false;    // light box fitted to the visible samples it holds (fit "samples")
+    // z-extension audit (renderer/csm/z_extension_audit.h), metres toward the sun beyond the slice:
+    float zExtensionUsed = 0.0f;   // +inf with pancaking (casters clamp onto the near plane)
+    float zExtensionMinimal = 0.0f;
+    bool zExtensionCuts = false;   // the setting clips a caster that can shadow the slice
+};
+
+// The depth reduction of sample distribution shadow maps (renderer/csm/depth_bounds.h).
+struct DepthBoundsStats {
+    std::string mode = "off";      // cascades.depthBounds
+    bool reduced = false;          // the frame reduced the camera's depth buffer
+    bool seen = false;             // some pixel shows geometry
+    float vsMin = 0.0f;            // nearest and farthest view depth seen, metres
+    float vsMax = 0.0f;
+    std::string source;            // whose depth buffer: "depth prepass, same frame" or "previous frame"
 };
 
 struct FrameStats {
     std::vector<float> splits;
+    float splitBegin = 0.0f;   // the view-depth range the split scheme divided (fitted with depthBounds fit)
+    float splitEnd = 0.0f;
+    DepthBoundsStats depthBounds;
     std::vector<CascadeStats> cascades;
     std::size_t shadowMapBytes = 0;
     double gpuShadowMs = 0.0;  // all cascades
     double gpuMainMs = 0.0;
+    double gpuDepthBoundsMs = 0.0;  // depth prepass and reduction (0 without them)
     double cpuMs = 0.0;        // CPU time to plan and submit the frame
     std::size_t mainTriangles = 0;  // submitted by the main pass after frustum culling of clusters
     int mainDraws = 0;
     std::size_t sceneTriangles = 0;
     int width = 0;
     int height = 0;
+    // Filled by the commands, not by Renderer::render: wasted maps and cut casters, each with
+    // the likely fix (metrics/map_warnings.h).
+    std::vector<std::string> warnings;
 };
 
 std::string toJsonText(const FrameStats& s);  // pretty JSON, for the file beside each image

@@ -1,5 +1,7 @@
 #include "renderer/render/renderer.h"
 
+#include "renderer/csm/culling.h"
+#include "renderer/csm/z_extension_audit.h"
 #include "renderer/render/shader_blocks.h"
 #include "renderer/render/shader_library.h"
 
@@ -20,15 +22,26 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     stats.height = s.output.height;
     stats.sceneTriangles = scene_.scene().triangleCount();
     float aspect = float(s.output.width) / float(s.output.height);
-    plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds);
-    stats.splits = plan_.splits;
     target_.ensure(s.output.width, s.output.height);
+    // Timers: cascades 0..count-1, the main pass, the depth prepass and reduction.
+    const int boundsTimer = s.cascades.count + 1;
+    timers_.beginFrame(s.cascades.count + 2);
+    csm::SampleBounds samples;
+    const bool reduce = csm::needsSampleBounds(s.cascades);
+    if (reduce) {
+        timers_.begin(boundsTimer);
+        samples = reduceSamples(s, aspect);
+        timers_.end(boundsTimer);
+    }
+    plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds, reduce ? &samples : nullptr);
+    stats.splits = plan_.splits;
+    recordDepthBounds(s, reduce ? &samples : nullptr, stats);
     shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
-    timers_.beginFrame(s.cascades.count + 1);
     shadowPass(s, stats);
     cascadeBlock_.upload(cascadeBlock(s, plan_));  // after: a kept map brings the fit it was drawn with
+    auditZExtension(s, stats);
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
     else
@@ -41,7 +54,60 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.gpuShadowMs += stats.cascades[i].gpuMs;
     }
     stats.gpuMainMs = timers_.milliseconds(s.cascades.count);
+    if (reduce) stats.gpuDepthBoundsMs = timers_.milliseconds(boundsTimer);
     return stats;
+}
+
+csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
+    gpu::DebugGroup group("depth prepass");
+    const csm::CameraParams cam = csm::cameraFromSettings(s.camera, aspect);
+    const glm::mat4 proj = csm::projectionMatrix(cam);
+    gpu::PassState state = gpu::opaqueScenePass(target_.framebuffer(), target_.width(), target_.height());
+    state.colorWrite = false;
+    gpu::applyPassState(state);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(depthProgram_.id());
+    viewBlock_.upload({proj * csm::viewMatrix(cam)});
+    viewBlock_.bind(ST_BLOCK_VIEW);
+    drawVisible(proj * csm::viewMatrix(cam));  // culled and batched, as the main pass will draw it
+    if (!depthBounds_) depthBounds_ = std::make_unique<DepthBoundsPass>();
+    csm::SampleBounds out;
+    out.depth = depthBounds_->depthRange(target_.depthTexture(), target_.width(), target_.height(), proj);
+    if (s.cascades.fit == FitMode::Samples) {
+        const glm::mat4 lsView = csm::lightViewMatrix(csm::lightDirection(s.light.azimuth, s.light.elevation));
+        out.lsCascade = depthBounds_->cascadeBounds(target_.depthTexture(), target_.width(), target_.height(), proj,
+                                                    lsView * csm::inverseViewMatrix(cam), csm::planSplits(s, out.depth));
+    }
+    return out;
+}
+
+void Renderer::recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const {
+    stats.splitBegin = plan_.splitRange.begin;
+    stats.splitEnd = plan_.splitRange.end;
+    DepthBoundsStats& d = stats.depthBounds;
+    d.mode = s.cascades.depthBounds == DepthBounds::Fit ? "fit" : "off";
+    if (!samples) return;
+    d.reduced = true;
+    d.source = "depth prepass, same frame";
+    if (samples->depth) {
+        d.seen = true;
+        d.vsMin = samples->depth->vsMin;
+        d.vsMax = samples->depth->vsMax;
+    }
+}
+
+void Renderer::auditZExtension(const Settings& s, FrameStats& stats) const {
+    std::vector<csm::Aabb> casters;
+    for (const DrawItem& item : scene_.scene().draws) casters.push_back(item.wsBounds);
+    for (int i = 0; i < s.cascades.count; ++i) {
+        const csm::CascadeFit& fit = plan_.cascades[std::size_t(i)];
+        const csm::ZExtensionAudit a = csm::auditZExtension(fit, casters, s.cascades.zExtension);
+        CascadeStats& c = stats.cascades[std::size_t(i)];
+        c.zExtensionUsed = a.used;
+        c.zExtensionMinimal = a.minimal;
+        c.zExtensionCuts = a.cuts;
+        c.samplesFitted = fit.fittedToSamples;
+    }
 }
 
 void Renderer::shadowPass(const Settings& s, FrameStats& stats) {

@@ -8,6 +8,7 @@
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/cascade_cache.h"
 #include "renderer/render/draw_batches.h"
+#include "renderer/render/depth_bounds_pass.h"
 #include "renderer/render/frame_stats.h"
 #include "renderer/render/gpu_timer.h"
 #include "renderer/render/line_pass.h"
@@ -20,6 +21,7 @@
 #include "shaders/interface.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace st {
@@ -74,6 +76,10 @@ private:
     // Cascade i of the clustered path (caster_pass.cpp): culls, then redraws or keeps the map.
     void cascadeCasters(const Settings& s, int i, CascadeStats& cs);
     void naiveCascadeCasters(const Settings& s, int i, CascadeStats& cs);
+    // SDSM: the main camera's depth drawn into the target (a prepass of this frame) and reduced.
+    csm::SampleBounds reduceSamples(const Settings& s, float aspect);
+    void recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const;
+    void auditZExtension(const Settings& s, FrameStats& stats) const;
     // Draws the shaded scene seen through viewProj into `target`; shadows always follow the
     // main camera's cascades.
     void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target);
@@ -88,6 +94,7 @@ private:
     LinePass lines_;
     OffscreenTarget target_;
     csm::CascadePlan plan_;
+    std::unique_ptr<DepthBoundsPass> depthBounds_;  // on first use
     gpu::UniformBuffer<gpu_if::FrameBlock> frameBlock_;
     gpu::UniformBuffer<gpu_if::CascadeBlock> cascadeBlock_;
     gpu::UniformBuffer<gpu_if::ViewBlock> viewBlock_;

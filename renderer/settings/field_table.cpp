@@ -100,6 +100,9 @@ std::vector<FieldInfo> cascadeSplitRows() {
         {.path = "cascades.shadowDistance", .label = "Shadow distance",
          .help = "Ends the last cascade before the far plane so no resolution goes to distant shadows; 0 = far plane.",
          .unit = "m", .kind = K::Float, .min = 0, .max = 1e6, .step = 1, ST_FIELD_ACCESS(cascades.shadowDistance)},
+        {.path = "cascades.depthBounds", .label = "Depth bounds",
+         .help = "fit: splits placed inside the nearest and farthest depth the camera sees (a depth prepass), not up to the far plane.",
+         .kind = K::Enum, .enumNames = enumNames<DepthBounds>(), ST_FIELD_ACCESS(cascades.depthBounds)},
         {.path = "cascades.mapSize", .label = "Map size",
          .help = "Texels per side of each cascade's map; doubling halves the texel footprint at 4x the memory.",
          .unit = "texels", .kind = K::Int, .min = 256, .max = 8192, .step = 1, .powerOfTwo = true,
@@ -110,7 +113,7 @@ std::vector<FieldInfo> cascadeSplitRows() {
 std::vector<FieldInfo> cascadeFitRows() {
     return {
         {.path = "cascades.fit", .label = "Fit",
-         .help = "How each light box is fitted: tight to its slice, from the near plane, or a rotation-stable sphere.",
+         .help = "Light box fit: tight to its slice, from the near plane, a rotation-stable sphere, or the visible samples it holds.",
          .kind = K::Enum, .enumNames = enumNames<FitMode>(), ST_FIELD_ACCESS(cascades.fit)},
         {.path = "cascades.stabilize", .label = "Stabilize",
          .help = "Snaps each light box to whole texels so shadow edges do not shimmer as the camera moves.",
@@ -134,6 +137,9 @@ std::vector<FieldInfo> cascadeFitRows() {
          .help = "Frames between redraws of each cascade (e.g. 1, 1, 2, 4): far maps redrawn less often lag the camera.",
          .unit = "frames", .kind = K::FloatList, .min = 1, .max = 64, .step = 1,
          ST_FIELD_ACCESS(cascades.updateInterval)},
+        {.path = "cascades.fadeBand", .label = "Fade band",
+         .help = "Fraction of the last cascade's depth range faded to lit at its far end, so shadows end softly, not at a line.",
+         .kind = K::Float, .min = 0, .max = 1, .step = 0.01, .shader = "fadeBand", ST_FIELD_ACCESS(cascades.fadeBand)},
     };
 }
 

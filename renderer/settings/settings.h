@@ -34,10 +34,21 @@ struct EnumNames<SplitScheme> {
 // Cascade: tight light-space AABB of each slice (crop matrix, seeds 000/002).
 // Scene: every cascade starts at the camera near plane (seed 004 "fit to scene").
 // Sphere: bounding sphere of the slice, size constant under rotation (seed 001).
-enum class FitMode { Cascade = ST_FIT_CASCADE, Scene = ST_FIT_SCENE, Sphere = ST_FIT_SPHERE };
+// Samples: the light-space bounds of the visible samples the cascade holds (Lauritzen et al.
+// 2011, "Sample Distribution Shadow Maps"), reduced from the camera's depth buffer.
+enum class FitMode { Cascade = ST_FIT_CASCADE, Scene = ST_FIT_SCENE, Sphere = ST_FIT_SPHERE, Samples = ST_FIT_SAMPLES };
 template <>
 struct EnumNames<FitMode> {
-    static constexpr std::array<std::string_view, ST_FIT_COUNT> names{"cascade", "scene", "sphere"};
+    static constexpr std::array<std::string_view, ST_FIT_COUNT> names{"cascade", "scene", "sphere", "samples"};
+};
+
+// Where the split scheme places the splits: Off = [camera near, far or shadow distance];
+// Fit = inside the nearest and farthest view depth the camera actually sees (SDSM, Lauritzen
+// et al. 2011), reduced from a depth prepass of the same frame.
+enum class DepthBounds { Off = ST_DEPTH_BOUNDS_OFF, Fit = ST_DEPTH_BOUNDS_FIT };
+template <>
+struct EnumNames<DepthBounds> {
+    static constexpr std::array<std::string_view, ST_DEPTH_BOUNDS_COUNT> names{"off", "fit"};
 };
 
 // How far the light box reaches toward the light beyond the slice itself.
@@ -85,7 +96,8 @@ struct EnumNames<View> {
 // The codes of an enum run 0..COUNT-1 with no gap, so a value indexes its name table and a code
 // read from a file is valid exactly when it is below the table's size.
 static_assert(int(SplitScheme::Manual) == ST_SPLIT_COUNT - 1 && int(SplitScheme::Uniform) == 0);
-static_assert(int(FitMode::Sphere) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
+static_assert(int(FitMode::Samples) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
+static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBounds::Off) == 0);
 static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::None) == 0);
 static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
 static_assert(int(FilterKind::PcfNxN) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
@@ -120,6 +132,7 @@ struct CascadeSettings {
     float lambda = 0.5f;                   // seed 000: 1 = fully logarithmic, 0 = uniform
     std::vector<float> manualSplits;       // view-depth ends of cascades 0..count-2, metres, increasing
     float shadowDistance = 0.0f;           // metres; 0 = camera far plane
+    DepthBounds depthBounds = DepthBounds::Off;
     int mapSize = 1024;                    // texels per side, power of two 256..8192
     FitMode fit = FitMode::Cascade;
     bool stabilize = false;                // snap the light box to whole texels (seed 001)
@@ -129,6 +142,7 @@ struct CascadeSettings {
     float blendBand = 0.0f;                // fraction of a cascade's depth range blended into the next, 0..0.5
     bool casterCulling = true;             // cull casters whose shadow cannot reach the slice (Bittner 2011)
     std::vector<float> updateInterval;     // frames between redraws of cascade i (whole numbers >= 1); missing = 1
+    float fadeBand = 0.0f;                 // fraction of the last cascade's range faded to lit at its far end, 0..1
     bool operator==(const CascadeSettings&) const = default;
 };
 

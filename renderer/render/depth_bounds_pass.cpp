@@ -1,0 +1,108 @@
+#include "renderer/render/depth_bounds_pass.h"
+
+#include "renderer/render/shader_library.h"
+
+#include <glm/matrix.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
+namespace st {
+
+// shaders/depth_bounds_comp.glsl's ReduceResult (std430: uint arrays are tightly packed).
+struct DepthBoundsPass::Result {
+    std::uint32_t depthKeys[4];
+    std::uint32_t lsMinKeys[3 * ST_MAX_CASCADES];
+    std::uint32_t lsMaxKeys[3 * ST_MAX_CASCADES];
+    std::uint32_t lsSamples[ST_MAX_CASCADES];
+};
+
+namespace {
+
+constexpr int kGroupTexels = 16 * 4;  // local_size_x/y of the shader times its TILE
+
+// Inverse of the shader's orderedKey().
+float fromKey(std::uint32_t key) {
+    const std::uint32_t bits = (key & 0x80000000u) ? (key & 0x7fffffffu) : ~key;
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
+gpu::Program linkCompute(const std::string& file) {
+    const ExpandedShader src = expandShader(file);
+    try {
+        return gpu::linkComputeProgram(src.text, file);
+    } catch (const gpu::ShaderCompileError& e) {
+        throw std::runtime_error("shader " + file + " failed to compile:\n" + nameLogFiles(e.log, src.files));
+    }
+}
+
+}  // namespace
+
+DepthBoundsPass::DepthBoundsPass() : program_(linkCompute("depth_bounds_comp.glsl")) {
+    result_ = gpu::createBuffer(nullptr, sizeof(Result), GL_DYNAMIC_STORAGE_BIT);
+}
+
+DepthBoundsPass::Result DepthBoundsPass::run(GLuint depth, const gpu_if::ReduceBlock& block) {
+    gpu::DebugGroup group("depth bounds");
+    Result r{};
+    r.depthKeys[0] = 0xffffffffu;
+    for (std::uint32_t& k : r.lsMinKeys) k = 0xffffffffu;
+    glNamedBufferSubData(result_.id(), 0, sizeof r, &r);
+    block_.upload(block);
+    block_.bind(ST_BLOCK_REDUCE);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ST_STORAGE_REDUCE, result_.id());
+    glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, depth);
+    glUseProgram(program_.id());
+    glDispatchCompute(GLuint((block.reduceWidth + kGroupTexels - 1) / kGroupTexels),
+                      GLuint((block.reduceHeight + kGroupTexels - 1) / kGroupTexels), 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(result_.id(), 0, sizeof r, &r);
+    glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ST_STORAGE_REDUCE, 0);
+    return r;
+}
+
+std::optional<csm::DepthRange> DepthBoundsPass::depthRange(GLuint depth, int width, int height,
+                                                           const glm::mat4& csProj) {
+    gpu_if::ReduceBlock b;
+    b.reduceInvProj = glm::inverse(csProj);
+    b.reduceMode = 0;
+    b.reduceWidth = width;
+    b.reduceHeight = height;
+    const Result r = run(depth, b);
+    if (r.depthKeys[2] == 0) return std::nullopt;
+    return csm::DepthRange{fromKey(r.depthKeys[0]), fromKey(r.depthKeys[1])};
+}
+
+std::vector<std::optional<csm::Aabb>> DepthBoundsPass::cascadeBounds(GLuint depth, int width, int height,
+                                                                     const glm::mat4& csProj, const glm::mat4& vsToLs,
+                                                                     std::span<const float> splits) {
+    const int count = static_cast<int>(splits.size()) - 1;
+    if (count < 1 || count > ST_MAX_CASCADES)
+        throw std::invalid_argument("depth bounds: " + std::to_string(splits.size()) + " split depths");
+    gpu_if::ReduceBlock b;
+    b.reduceInvProj = glm::inverse(csProj);
+    b.reduceVsToLs = vsToLs;
+    for (std::size_t i = 0; i < splits.size(); ++i) b.reduceSplits[i / 4][int(i % 4)] = splits[i];
+    b.reduceMode = 1;
+    b.reduceCascades = count;
+    b.reduceWidth = width;
+    b.reduceHeight = height;
+    const Result r = run(depth, b);
+    std::vector<std::optional<csm::Aabb>> out(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        if (r.lsSamples[i] == 0) continue;
+        csm::Aabb box;
+        for (int k = 0; k < 3; ++k) {
+            box.min[k] = fromKey(r.lsMinKeys[3 * i + k]);
+            box.max[k] = fromKey(r.lsMaxKeys[3 * i + k]);
+        }
+        out[static_cast<std::size_t>(i)] = box;
+    }
+    return out;
+}
+
+}  // namespace st
