@@ -1,5 +1,7 @@
 #include "app/measure_command.h"
 
+#include "app/label_strip.h"
+#include "app/legend_image.h"
 #include "app/preset_batch.h"
 
 #include "metrics/measure_session.h"
@@ -57,7 +59,15 @@ report::LineChart pathChart(const metrics::FlickerReport& f, const std::string& 
 void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
     makeOutputDir(dir);
     writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
-    writeImageAtomic(dir / "errors.png", metrics::errorImage(m.accuracy, m.samples.width, m.samples.height));
+    writeImageAtomic(dir / "errors.png",
+                     withLegend(metrics::errorImage(m.accuracy, m.samples.width, m.samples.height),
+                                "nearest test vs the point truth", metrics::errorLegend(m.accuracy)));
+    char title[96];
+    std::snprintf(title, sizeof title, "filtered vs the sun's disc (%.2f deg, %d rays), k = %.1f texels",
+                  double(m.sun.angularDiameter), m.sun.rays, double(m.settings.measure.artifactTexels));
+    writeImageAtomic(dir / "artifacts.png", withLegend(metrics::artifactImage(m.samples, m.softTruth, m.soft), title,
+                                                       metrics::artifactLegend(m.softTruth, m.soft)));
+    releaseTextCaches();
     writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
     if (m.flicker) {
         writeImageAtomic(dir / "flicker.png", metrics::flickerImage(m.flickerStdDev, m.samples));

@@ -167,7 +167,10 @@ SoftAccuracyReport scoreSoftAccuracy(const MeasureSamples& s, const SoftTruth& t
     for (std::size_t i = 0; i < s.size(); ++i) {
         filtered[i] = s.shadow[i].y;
         const ArtifactClass k = r.classes[i];
-        penumbraUse[i] = k == ArtifactClass::Correct || k == ArtifactClass::Edge || k == ArtifactClass::PeterPanning;
+        // Greys far out in the light are the kernel's speckle, not a penumbra.
+        const bool nearShadow = t.visible[i] < 1.0f || toShadow[i] <= p.k * texelPx(s, i);
+        penumbraUse[i] =
+            nearShadow && (k == ArtifactClass::Correct || k == ArtifactClass::Edge || k == ArtifactClass::PeterPanning);
     }
     penumbraWidth(s, t.visible, {}, 0.0f, r.penumbra.truthPx, r.penumbra.truthPixels, r.penumbra.truthContour);
     penumbraWidth(s, filtered, penumbraUse, 0.02f, r.penumbra.filteredPx, r.penumbra.filteredPixels, r.penumbra.filteredContour);

@@ -39,8 +39,8 @@ struct ArtifactCounts {
 
 // Mean penumbra width in screen pixels: the pixels strictly between umbra and full light over
 // the length of the 0.5 contour (pixels >= 0.5 with a 4-neighbour < 0.5), for the truth and for
-// the filtered factor (leaving out pixels classed acne, bleeding or missing caster, whose
-// greys are not a penumbra). 0 where there is no contour.
+// the filtered factor (leaving out pixels classed acne, bleeding or missing caster, and greys
+// more than k texels out in full light: speckle, not a penumbra). 0 where there is no contour.
 struct PenumbraWidth {
     double truthPx = 0.0, filteredPx = 0.0;
     std::size_t truthPixels = 0, truthContour = 0, filteredPixels = 0, filteredContour = 0;

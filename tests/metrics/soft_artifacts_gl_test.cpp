@@ -35,5 +35,25 @@ TEST_F(SoftArtifactsGLTest, ThreeByThreePcfAcneIsCountedAsAcne) {
     EXPECT_LT(fixed.acne * 100, soft.acne);
 }
 
+// A sweep's points share the soft truth as they share the point truth: another filter or bias
+// reuses it, another angular diameter traces it anew.
+TEST_F(SoftArtifactsGLTest, SoftTruthIsTracedOncePerFrameAndDisc) {
+    Settings s = scenario("grazing-slope");
+    const metrics::PresetMeasurement a = measure(s);
+    EXPECT_GT(a.timings.softTruthMs, 0.0);
+    s.filter.kind = FilterKind::Hard;
+    s.bias.slope = 3.0f;
+    const metrics::PresetMeasurement b = measure(s);
+    EXPECT_EQ(b.timings.softTruthMs, 0.0) << "same frame, same disc: the cached truth";
+    EXPECT_EQ(b.softTruth.visible, a.softTruth.visible);
+    s.light.angularDiameter = 2.0f;
+    const metrics::PresetMeasurement c = measure(s);
+    EXPECT_GT(c.timings.softTruthMs, 0.0);
+    EXPECT_NE(c.softTruth.visible, a.softTruth.visible);
+    EXPECT_GT(c.soft.penumbra.truthPx, a.soft.penumbra.truthPx) << "a wider sun, wider true penumbrae";
+    printFigures("grazing-slope true penumbra: %.2f px at 0.53 deg, %.2f px at 2 deg", a.soft.penumbra.truthPx,
+                 c.soft.penumbra.truthPx);
+}
+
 }  // namespace
 }  // namespace st
