@@ -45,6 +45,7 @@ private:
     std::optional<Settings> last_;       // the previous frame's settings, to see a change
     bool wanted_ = false;
     double readBackSeconds_ = 0.0;       // of the job in flight
+    metrics::SunDisc sun_;               // the disc of the job in flight
     ui::AccuracyView view_;              // figures (Done) or error (Failed) of the last job
 };
 

@@ -191,7 +191,7 @@ std::vector<FieldInfo> measureRows() {
          .unit = "rays", .kind = K::Int, .min = 1, .max = 1024, .step = 1, .change = C::None,
          ST_FIELD_ACCESS(measure.sunRays)},
         {.path = "measure.artifactTexels", .label = "Artifact distance",
-         .help = "k of the artifact classes: light more than k texels inside a true shadow is bleeding, within k texels of a contact peter-panning.",
+         .help = "Light more than k texels inside a true shadow is bleeding; light within k texels of a contact is peter-panning.",
          .unit = "texels", .kind = K::Float, .min = 0, .max = 64, .step = 0.1, .change = C::None,
          ST_FIELD_ACCESS(measure.artifactTexels)},
     };
