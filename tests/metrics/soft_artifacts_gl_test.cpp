@@ -3,6 +3,10 @@
 // neighbour texels (filtered error about 0.15). Against the soft truth the acne is counted.
 #include "tests/metrics/scenario_gl_util.h"
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
 namespace st {
 namespace {
 
@@ -53,6 +57,35 @@ TEST_F(SoftArtifactsGLTest, SoftTruthIsTracedOncePerFrameAndDisc) {
     EXPECT_GT(c.soft.penumbra.truthPx, a.soft.penumbra.truthPx) << "a wider sun, wider true penumbrae";
     printFigures("grazing-slope true penumbra: %.2f px at 0.53 deg, %.2f px at 2 deg", a.soft.penumbra.truthPx,
                  c.soft.penumbra.truthPx);
+}
+
+// The adaptive trace (every ray only where a pixel's 3x3 block is not unanimous) against every
+// ray at every receiver, on Truck Town's alpha-cut trees and lamp posts at the sun's 0.53 deg.
+TEST_F(SoftArtifactsGLTest, AdaptiveSoftTruthMatchesEveryRayOnTruckTown) {
+    Settings s = test::presetAtTestSize("scenes/truck-town");
+    s.scene = std::string(ST_PRESET_DIR) + "/scenes/" + s.scene;  // relative to its own folder
+    if (!std::filesystem::exists(s.scene)) GTEST_SKIP() << s.scene << " is not here";
+    s.measure.sunRays = 64;
+    const metrics::PresetMeasurement m = measure(s);
+    auto& e = session_.entryFor(s, ST_PRESET_DIR);
+    metrics::SunDisc every = m.sun;
+    every.exhaustive = true;
+    const metrics::SoftTruth all =
+        e.truth->traceDisc(m.samples, -e.renderer->plan().wsLightDir, every, s.camera.position);
+    std::size_t differ = 0, receivers = 0;
+    double sum = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < m.samples.size(); ++i) {
+        if (!m.samples.receiver(i)) continue;
+        ++receivers;
+        const double d = std::abs(double(all.visible[i]) - double(m.softTruth.visible[i]));
+        differ += d > 0.0;
+        sum += d;
+        worst = std::max(worst, d);
+    }
+    printFigures("truck-town 320x180, 64 rays: adaptive differs from every ray at %zu of %zu px, mean %.2e, max %.3f",
+                 differ, receivers, sum / double(receivers), worst);
+    EXPECT_LT(double(differ), 0.002 * double(receivers));
+    EXPECT_LT(sum / double(receivers), 1e-4);
 }
 
 }  // namespace
