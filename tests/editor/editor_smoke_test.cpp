@@ -97,6 +97,8 @@ TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << log;
     const std::string editorLog = readText(log);
     ASSERT_NE(editorLog.find("accuracy: done in"), std::string::npos) << editorLog;
+    EXPECT_NE(editorLog.find("against the sun's disc (0.53 deg, 16 rays): filtered error"), std::string::npos)
+        << "the panel's soft-truth figures";
 
     const std::string measure = "'" ST_SHADOWTUNE "' measure '" + preset.string() + "' --size 1280x720 --no-flicker "
                                 "--frames 1 --out '" + (dir / "measure").string() + "' > '" + (dir / "measure.txt").string() + "' 2>&1";
