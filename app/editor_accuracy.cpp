@@ -80,6 +80,9 @@ void EditorAccuracy::start(Renderer& r, const Settings& s, const std::shared_ptr
         frame.cascadeCount = s.cascades.count;
         frame.wsEye = s.camera.position;
         pendingWarnings_ = wastedMaps(r.plan(), s, frame.samples);
+        frame.sun = metrics::sunDisc(s);
+        frame.artifactTexels = s.measure.artifactTexels;
+        sun_ = frame.sun;
         worker_.submit(std::move(frame));
     } catch (const std::exception& e) {
         view_.error = e.what();
@@ -99,8 +102,8 @@ void EditorAccuracy::collect() {
     const metrics::StillAccuracy& a = *out->result;
     view_.seconds = readBackSeconds_ + out->seconds;
     char timing[160];
-    std::snprintf(timing, sizeof timing, "read-back %.2f s, BVH %.2f s, rays %.2f s, scoring %.2f s",
-                  readBackSeconds_, a.bvhMs / 1000.0, a.raysMs / 1000.0, a.scoreMs / 1000.0);
+    std::snprintf(timing, sizeof timing, "read-back %.2f s, BVH %.2f s, rays %.2f s, sun's disc %.2f s, scoring %.2f s",
+                  readBackSeconds_, a.bvhMs / 1000.0, a.raysMs / 1000.0, a.softRaysMs / 1000.0, a.scoreMs / 1000.0);
     view_.timing = timing;
     view_.width = a.overlay.width;
     view_.height = a.overlay.height;
@@ -109,6 +112,9 @@ void EditorAccuracy::collect() {
     for (const metrics::ErrorCounts& c : a.report.cascades) view_.cascades.push_back(toUi(c));
     view_.beyond = toUi(a.report.beyond);
     view_.warnings = pendingWarnings_;
+    const metrics::ArtifactCounts& k = a.soft.all;
+    view_.soft = {sun_.angularDiameter, sun_.rays, k.receivers, k.filteredError(), k.acne, k.lightBleeding,
+                  k.peterPanning, k.missingCaster, k.edge, a.soft.penumbra.truthPx, a.soft.penumbra.filteredPx};
     overlay_.upload(a.overlay.width, a.overlay.height, a.overlay.pixels);
     classes_ = a.report.classes;
     schedule_.finished(true);
@@ -145,12 +151,16 @@ std::string EditorAccuracy::summary() const {
     if (v.state == ui::AccuracyView::State::Failed) return "accuracy: failed: " + v.error;
     if (v.state != ui::AccuracyView::State::Done) return "accuracy: not computed";
     const ui::AccuracyCounts& c = v.all;
-    char text[384];
+    const ui::SoftAccuracyCounts& k = v.soft;
+    char text[640];
     std::snprintf(text, sizeof text, "accuracy: done in %.2f s (%dx%d): misclassified %s (false shadow %s, "
-                  "false light %s; gross %zu px) of %zu sun-facing px, filtered error %.4f [%s]",
+                  "false light %s; gross %zu px) of %zu sun-facing px, filtered error %.4f; against the sun's disc "
+                  "(%.2f deg, %d rays): filtered error %.4f, acne %zu px, light bleeding %zu px, peter-panning %zu px, "
+                  "missing caster %zu px [%s]",
                   v.seconds, v.width, v.height, percent(c.share(c.misclassified())).c_str(),
                   percent(c.share(c.falseShadow())).c_str(), percent(c.share(c.falseLight())).c_str(), c.gross(),
-                  c.receivers, c.filteredError, v.timing.c_str());
+                  c.receivers, c.filteredError, double(k.angularDiameter), k.rays, k.filteredError, k.acne,
+                  k.lightBleeding, k.peterPanning, k.missingCaster, v.timing.c_str());
     return text;
 }
 

@@ -49,6 +49,7 @@ private:
     bool wanted_ = false;
     double readBackSeconds_ = 0.0;       // of the job in flight
     std::vector<std::string> pendingWarnings_;  // of the job in flight
+    metrics::SunDisc sun_;               // the disc of the job in flight
     ui::AccuracyView view_;              // figures (Done) or error (Failed) of the last job
     std::vector<metrics::PixelClass> classes_;  // of the last job that was done
 };

@@ -1,5 +1,7 @@
 #include "app/measure_command.h"
 
+#include "app/label_strip.h"
+#include "app/legend_image.h"
 #include "app/preset_batch.h"
 
 #include "metrics/measure_session.h"
@@ -57,7 +59,15 @@ report::LineChart pathChart(const metrics::FlickerReport& f, const std::string& 
 void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
     makeOutputDir(dir);
     writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
-    writeImageAtomic(dir / "errors.png", metrics::errorImage(m.accuracy, m.samples.width, m.samples.height));
+    writeImageAtomic(dir / "errors.png",
+                     withLegend(metrics::errorImage(m.accuracy, m.samples.width, m.samples.height),
+                                "nearest test vs the point truth", metrics::errorLegend(m.accuracy)));
+    char title[96];
+    std::snprintf(title, sizeof title, "filtered vs the sun's disc (%.2f deg, %d rays), k = %.1f texels",
+                  double(m.sun.angularDiameter), m.sun.rays, double(m.settings.measure.artifactTexels));
+    writeImageAtomic(dir / "artifacts.png", withLegend(metrics::artifactImage(m.samples, m.softTruth, m.soft), title,
+                                                       metrics::artifactLegend(m.softTruth, m.soft)));
+    releaseTextCaches();
     writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
     if (m.flicker) {
         writeImageAtomic(dir / "flicker.png", metrics::flickerImage(m.flickerStdDev, m.samples));
@@ -73,10 +83,18 @@ void printSummary(const metrics::PresetMeasurement& m, const std::string& name, 
                 name.c_str(), m.samples.width, m.samples.height, percent(a.share(a.misclassified())).c_str(),
                 percent(a.share(a.falseShadow())).c_str(), percent(a.share(a.falseLight())).c_str(), a.gross(),
                 a.filteredError(), m.density.all.median, m.density.all.p95);
+    const metrics::ArtifactCounts& k = m.soft.all;
+    std::printf("; against the sun's disc (%.2f deg, %d rays): filtered error %.4f, acne %s (%zu px), "
+                "light bleeding %s (%zu px), peter-panning %s (%zu px), missing caster %s (%zu px), "
+                "penumbra %.2f px vs %.2f px true",
+                double(m.sun.angularDiameter), m.sun.rays, k.filteredError(), percent(k.share(k.acne)).c_str(), k.acne,
+                percent(k.share(k.lightBleeding)).c_str(), k.lightBleeding, percent(k.share(k.peterPanning)).c_str(),
+                k.peterPanning, percent(k.share(k.missingCaster)).c_str(), k.missingCaster, m.soft.penumbra.filteredPx,
+                m.soft.penumbra.truthPx);
     if (m.flicker) std::printf(", flicker F %s", percent(m.flicker->flipRate).c_str());
     if (m.cost) std::printf(", GPU shadow %.1f ms main %.1f ms", m.cost->gpuShadowMs, m.cost->gpuMainMs);
-    std::printf(" | ground truth %.3f s, total %.2f s -> %s\n", m.timings.groundTruthMs / 1000.0,
-                m.timings.totalMs / 1000.0, dir.string().c_str());
+    std::printf(" | ground truth %.3f s, soft truth %.3f s, total %.2f s -> %s\n", m.timings.groundTruthMs / 1000.0,
+                m.timings.softTruthMs / 1000.0, m.timings.totalMs / 1000.0, dir.string().c_str());
     std::fflush(stdout);
 }
 

@@ -1,6 +1,7 @@
 // `shadowtune sweep`: command-line options of the sweep command.
 #include "app/commands.h"
 #include "app/sweep_command.h"
+#include "sweep/sweep_results.h"
 
 #include <memory>
 
@@ -16,7 +17,7 @@ void addSweepCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--merge", opt->merge, "Join these shard folders of one sweep into --out instead of measuring")
         ->expected(1, -1);
     cmd->add_option("--error", opt->error, "Error figure of the charts and the front")
-        ->check(CLI::IsMember({"misclassified", "filtered", "flicker"}))
+        ->check(CLI::IsMember(sweep::errorChoices()))
         ->capture_default_str();
     cmd->add_option("--stop-after", opt->stopAfter, "Measure at most N new points, then stop as Ctrl-C would")
         ->check(CLI::NonNegativeNumber);

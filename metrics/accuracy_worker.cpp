@@ -36,7 +36,7 @@ std::uint64_t AccuracyWorker::submit(StillFrame frame) {
         cancelCurrentLocked();
         job.id = ++lastId_;
         current_ = job.control;
-        currentRows_ = 2 * job.frame.samples.height;
+        currentRows_ = 4 * job.frame.samples.height;  // JobControl's rows
         pending_ = std::move(job);
     }
     wake_.notify_all();

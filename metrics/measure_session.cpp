@@ -95,6 +95,7 @@ std::vector<std::uint8_t> cachedTruth(MeasureSession::SceneEntry& e, const Measu
                       e.lastPositions == samples.position && e.lastNormals == samples.normal &&
                       e.lastGeometry == samples.geometry;
     if (!same) {
+        e.lastDisc.reset();  // the soft truth was of other samples
         e.lastTruth = e.truth->trace(samples, toSun, eye);
         e.lastPositions = samples.position;
         e.lastNormals = samples.normal;
@@ -104,7 +105,24 @@ std::vector<std::uint8_t> cachedTruth(MeasureSession::SceneEntry& e, const Measu
     }
     return e.lastTruth;
 }
+// The soft truth of `samples` (cachedTruth() must have run on them just before: it keeps the
+// entry's inputs), traced unless the entry holds it for this disc. Returns the milliseconds spent.
+double cachedSoftTruth(MeasureSession::SceneEntry& e, const MeasureSamples& samples, const SunDisc& disc) {
+    if (e.lastDisc && *e.lastDisc == disc) return 0.0;
+    const auto t0 = Clock::now();
+    e.lastSoft = e.truth->traceDisc(samples, e.lastToSun, disc, e.lastEye);
+    e.lastDisc = disc;
+    return msSince(t0);
+}
+
+std::vector<float> texelWorldSizes(const csm::CascadePlan& plan) {
+    std::vector<float> out;
+    for (const csm::CascadeFit& c : plan.cascades) out.push_back(c.texelWorldSize);
+    return out;
+}
 }  // namespace
+
+SunDisc sunDisc(const Settings& s) { return {s.light.angularDiameter, s.measure.sunRays, kSunDiscSeed}; }
 
 // Truth, accuracy and texel density of the frame `s` shows: everything but cost and flicker.
 void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
@@ -119,6 +137,11 @@ void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settin
         return check.explains(glm::vec3(m.samples.position[i]), glm::vec3(m.samples.geometry[i]),
                               m.samples.cascade(i), mapLit);
     });
+    m.sun = sunDisc(s);
+    m.timings.softTruthMs = cachedSoftTruth(e, m.samples, m.sun);
+    m.softTruth = e.lastSoft;
+    m.soft = scoreSoftAccuracy(m.samples, m.softTruth, texelWorldSizes(e.renderer->plan()),
+                               {.k = s.measure.artifactTexels});
     m.density = texelDensity(m.samples, s.cascades.count);
 }
 
@@ -137,7 +160,9 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     for (std::string& w : wastedMapWarnings(s, m.frame, m.density, farthest, opt.warningLimits))
         m.warnings.push_back(std::move(w));
     m.frame.warnings = m.warnings;
-    report(opt, "ground truth " + seconds(m.timings.groundTruthMs) + " (BVH " + seconds(m.timings.bvhMs) + ")");
+    report(opt, "ground truth " + seconds(m.timings.groundTruthMs) + " (BVH " + seconds(m.timings.bvhMs) + "), soft truth " +
+                    seconds(m.timings.softTruthMs) + " (" + std::to_string(m.sun.rays) + " rays over " +
+                    std::to_string(m.sun.angularDiameter).substr(0, 4) + " deg)");
     if (opt.cost) {
         const auto t0 = Clock::now();
         m.cost = measureCost(*e.renderer, s, opt.costFrames);

@@ -9,6 +9,7 @@
 #include "metrics/flicker.h"
 #include "metrics/ground_truth.h"
 #include "metrics/map_warnings.h"
+#include "metrics/soft_accuracy.h"
 #include "metrics/texel_density.h"
 #include "renderer/render/measure_pass.h"
 #include "renderer/render/renderer.h"
@@ -31,6 +32,7 @@ namespace st::metrics {
 struct MeasureTimings {  // wall-clock milliseconds
     double bvhMs = 0.0;          // BVH build (once per scene; 0 when it was cached)
     double groundTruthMs = 0.0;  // rays for every pixel
+    double softTruthMs = 0.0;    // the sun's disc: measure.sunRays rays per receiver (0 when cached)
     double measurePassMs = 0.0;  // render + measurement pass + read-back
     double costMs = 0.0;
     double flickerMs = 0.0;
@@ -41,7 +43,10 @@ struct PresetMeasurement {
     Settings settings;
     MeasureSamples samples;
     std::vector<std::uint8_t> truth;  // 1 lit, 0 shadowed, per pixel
-    AccuracyReport accuracy;
+    AccuracyReport accuracy;            // the nearest test against the point (centre-ray) truth
+    SunDisc sun;                        // the disc the soft truth was traced for
+    SoftTruth softTruth;                // visible fraction of the sun's disc, per pixel
+    SoftAccuracyReport soft;            // the filtered result against the soft truth
     DensityReport density;
     std::optional<FlickerReport> flicker;  // when the preset has a path
     std::vector<float> flickerStdDev;      // per pixel, with flicker
@@ -78,6 +83,10 @@ public:
         std::vector<glm::vec4> lastPositions, lastNormals, lastGeometry;
         glm::vec3 lastToSun{0.0f}, lastEye{0.0f};
         std::vector<std::uint8_t> lastTruth;
+        // The soft truth of the same frame, for the disc it was traced with (the same inputs
+        // plus light.angularDiameter and measure.sunRays; the seed is fixed).
+        std::optional<SunDisc> lastDisc;
+        SoftTruth lastSoft;
     };
     using SceneEntry = SceneCache<TruthSlot>::Entry;
     SceneEntry& entryFor(const Settings& s, const std::filesystem::path& presetDir);
@@ -87,6 +96,9 @@ private:
     SceneCache<TruthSlot> scenes_;
     std::unique_ptr<MeasurePass> pass_;
 };
+
+// The sun's disc of `s` (light.angularDiameter, measure.sunRays, the fixed seed).
+SunDisc sunDisc(const Settings& s);
 
 // The per-frame pieces, for tests and tools that need only one figure.
 // Renders `cascadeSettings` (its camera drives the cascades) and reads back what the observer

@@ -71,7 +71,63 @@ void halo(Rgba8Image& img, std::size_t i, Rgb colour) {
     }
 }
 
+std::array<std::uint8_t, 3> bytes(Rgb c) { return {c.r, c.g, c.b}; }
+
+constexpr Rgb kAcne{235, 25, 25}, kBleeding{255, 150, 0}, kPeterPanning{225, 40, 225}, kMissing{30, 70, 255},
+    kEdge{245, 235, 150}, kLit{215, 215, 215}, kPenumbra{150, 150, 150}, kUmbra{85, 85, 85};
+
+Rgb artifactColor(ArtifactClass c, float truth) {
+    switch (c) {
+    case ArtifactClass::NotScored: return kNoSurface;
+    case ArtifactClass::Correct: return truth >= 1.0f ? kLit : truth <= 0.0f ? kUmbra : kPenumbra;
+    case ArtifactClass::Edge: return kEdge;
+    case ArtifactClass::Acne: return kAcne;
+    case ArtifactClass::LightBleeding: return kBleeding;
+    case ArtifactClass::PeterPanning: return kPeterPanning;
+    case ArtifactClass::MissingCaster: return kMissing;
+    }
+    return {255, 0, 255};
+}
+
 }  // namespace
+
+std::vector<LegendEntry> errorLegend(const AccuracyReport& a) {
+    std::vector<LegendEntry> out;
+    const std::pair<PixelClass, const char*> rows[] = {
+        {PixelClass::FalseShadowGross, "false shadow, gross (acne)"}, {PixelClass::FalseShadowEdge, "false shadow at an edge"},
+        {PixelClass::FalseLightGross, "false light, gross (leak, missing caster)"},
+        {PixelClass::FalseLightEdge, "false light at an edge"},       {PixelClass::CorrectLit, "lit, correct"},
+        {PixelClass::CorrectShadow, "shadow, correct"},              {PixelClass::FacingAway, "facing away"},
+        {PixelClass::Terminator, "terminator"},                      {PixelClass::NoSurface, "no surface"}};
+    for (const auto& [c, name] : rows) {
+        const std::size_t n = std::size_t(std::count(a.classes.begin(), a.classes.end(), c));
+        out.push_back({name, bytes(classColor(c)), n});
+    }
+    return out;
+}
+
+Rgba8Image artifactImage(const MeasureSamples& s, const SoftTruth& t, const SoftAccuracyReport& r) {
+    Rgba8Image img = blank(s.width, s.height);
+    for (std::size_t i = 0; i < r.classes.size(); ++i) put(img, i, artifactColor(r.classes[i], t.visible[i]));
+    return img;
+}
+
+std::vector<LegendEntry> artifactLegend(const SoftTruth& t, const SoftAccuracyReport& r) {
+    std::vector<LegendEntry> out{{"acne", bytes(kAcne), 0},
+                                 {"light bleeding", bytes(kBleeding), 0},
+                                 {"peter-panning", bytes(kPeterPanning), 0},
+                                 {"missing caster", bytes(kMissing), 0},
+                                 {"edge error", bytes(kEdge), 0},
+                                 {"correct, lit", bytes(kLit), 0},
+                                 {"correct, penumbra", bytes(kPenumbra), 0},
+                                 {"correct, umbra", bytes(kUmbra), 0},
+                                 {"not scored", bytes(kNoSurface), 0}};
+    for (std::size_t i = 0; i < r.classes.size(); ++i) {
+        const std::array<std::uint8_t, 3> c = bytes(artifactColor(r.classes[i], t.visible[i]));
+        for (LegendEntry& e : out) e.pixels += e.colour == c;
+    }
+    return out;
+}
 
 Rgba8Image truthImage(const MeasureSamples& s, const std::vector<std::uint8_t>& truth) {
     Rgba8Image img = blank(s.width, s.height);

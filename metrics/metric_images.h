@@ -1,10 +1,14 @@
 #pragma once
 // The images beside metrics.json, one colour per meaning (top row first, RGBA8).
 #include "metrics/accuracy.h"
+#include "metrics/soft_accuracy.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/measure_samples.h"
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace st::metrics {
@@ -24,6 +28,23 @@ Rgba8Image errorImage(const AccuracyReport& a, int width, int height);
 // of their colour so a lone one can be found in a full-window view. Everything else is fully
 // transparent. Straight alpha.
 Rgba8Image errorOverlayImage(const AccuracyReport& a, int width, int height);
+
+// One colour of an image and what it means, with the pixels of that colour.
+struct LegendEntry {
+    std::string name;
+    std::array<std::uint8_t, 3> colour{};
+    std::size_t pixels = 0;
+};
+
+// errorImage's colours, in its order (every colour it uses is one of them).
+std::vector<LegendEntry> errorLegend(const AccuracyReport& a);
+
+// The artifact classes of the filtered result against the soft truth: acne red, light bleeding
+// orange, peter-panning magenta, missing caster blue, edge error pale yellow; correct pixels in
+// greys by their true light (lit light, penumbra mid, umbra dark), not scored (facing away,
+// terminator, no surface) slate.
+Rgba8Image artifactImage(const MeasureSamples& s, const SoftTruth& truth, const SoftAccuracyReport& r);
+std::vector<LegendEntry> artifactLegend(const SoftTruth& truth, const SoftAccuracyReport& r);
 
 // Screen pixels per texel on log2, the texel-density view's ramp: blue (1/16) .. green (1) ..
 // red (16); grey beyond the shadow range.

@@ -32,6 +32,38 @@ OJson accuracyJson(const AccuracyReport& a) {
     return j;
 }
 
+OJson artifactJson(const ArtifactCounts& a) {
+    return OJson{
+        {"receivers", a.receivers},
+        {"filteredError", a.filteredError()},
+        {"acne", a.share(a.acne)},
+        {"lightBleeding", a.share(a.lightBleeding)},
+        {"peterPanning", a.share(a.peterPanning)},
+        {"missingCaster", a.share(a.missingCaster)},
+        {"edge", a.share(a.edge)},
+        {"pixels",
+         {{"acne", a.acne}, {"lightBleeding", a.lightBleeding}, {"peterPanning", a.peterPanning},
+          {"missingCaster", a.missingCaster}, {"edge", a.edge}}},
+    };
+}
+
+// The filtered result against the soft truth of the sun's disc (soft_accuracy.h).
+OJson softJson(const PresetMeasurement& m) {
+    OJson j = artifactJson(m.soft.all);
+    j["angularDiameter"] = m.sun.angularDiameter;
+    j["sunRays"] = m.sun.rays;
+    j["seed"] = m.sun.seed;
+    j["artifactTexels"] = m.settings.measure.artifactTexels;
+    const PenumbraWidth& p = m.soft.penumbra;
+    j["penumbraWidth"] = OJson{{"truthPx", p.truthPx},           {"filteredPx", p.filteredPx},
+                               {"errorPx", p.errorPx()},         {"truthPixels", p.truthPixels},
+                               {"truthContour", p.truthContour}, {"filteredPixels", p.filteredPixels},
+                               {"filteredContour", p.filteredContour}};
+    j["cascades"] = OJson::array();
+    for (const ArtifactCounts& c : m.soft.cascades) j["cascades"].push_back(artifactJson(c));
+    return j;
+}
+
 OJson densityJson(const DensityStats& d) {
     return OJson{{"pixels", d.pixels},   {"median", d.median},
                  {"p90", d.p90},         {"p95", d.p95},
@@ -70,7 +102,8 @@ OJson costJson(const CostReport& c) {
 }
 
 OJson timingsJson(const MeasureTimings& t) {
-    return OJson{{"bvhMs", t.bvhMs},         {"groundTruthMs", t.groundTruthMs}, {"measurePassMs", t.measurePassMs},
+    return OJson{{"bvhMs", t.bvhMs},         {"groundTruthMs", t.groundTruthMs}, {"softTruthMs", t.softTruthMs},
+                 {"measurePassMs", t.measurePassMs},
                  {"costMs", t.costMs},       {"flickerMs", t.flickerMs},         {"totalMs", t.totalMs}};
 }
 
@@ -84,6 +117,7 @@ OJson toJson(const PresetMeasurement& m, const std::string& presetName) {
             {"cascades", m.settings.cascades.count},
             {"mapSize", m.settings.cascades.mapSize},
             {"accuracy", accuracyJson(m.accuracy)},
+            {"soft", softJson(m)},
             {"texelDensity", texelDensityJson(m.density)},
             {"flicker", m.flicker ? flickerJson(*m.flicker) : OJson(nullptr)},
             {"cost", m.cost ? costJson(*m.cost) : OJson(nullptr)},

@@ -48,10 +48,18 @@ std::optional<StillAccuracy> computeStillAccuracy(const StillFrame& f, GroundTru
     out.raysMs = msSince(t0);
     if (control.cancelled()) return std::nullopt;
 
+    t0 = Clock::now();
+    const SoftTruth soft = truth.traceDisc(f.samples, -f.plan.wsLightDir, f.sun, f.wsEye, {}, control.rows());
+    out.softRaysMs = msSince(t0);
+    if (control.cancelled()) return std::nullopt;
+
     control.phase = JobControl::Phase::Scoring;
     t0 = Clock::now();
     out.report = score(f, truth, lit, control);
     if (control.cancelled()) return std::nullopt;
+    std::vector<float> texels;
+    for (const csm::CascadeFit& c : f.plan.cascades) texels.push_back(c.texelWorldSize);
+    out.soft = scoreSoftAccuracy(f.samples, soft, texels, {.k = f.artifactTexels});
     out.overlay = errorOverlayImage(out.report, f.samples.width, f.samples.height);
     out.scoreMs = msSince(t0);
     return out;

@@ -4,6 +4,7 @@
 // caller read back on its GL thread, with a cancel flag and progress the UI can watch.
 #include "metrics/accuracy.h"
 #include "metrics/ground_truth.h"
+#include "metrics/soft_accuracy.h"
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/measure_samples.h"
@@ -26,18 +27,22 @@ struct StillFrame {
     int mapSize = 0;
     int cascadeCount = 0;
     glm::vec3 wsEye{0.0f};
+    SunDisc sun;                  // sunDisc() of the settings (light.angularDiameter, measure.sunRays)
+    float artifactTexels = 2.0f;  // measure.artifactTexels
 };
 
 struct StillAccuracy {
     AccuracyReport report;
+    SoftAccuracyReport soft;  // the filtered result against the sun's disc
     Rgba8Image overlay;  // errorOverlayImage of the report, samples' size
     double bvhMs = 0.0;  // 0 when the BVH of the scene was already built
     double raysMs = 0.0;
+    double softRaysMs = 0.0;  // the sun's disc
     double scoreMs = 0.0;
 };
 
-// Shared between the job and whoever watches it. Progress counts rows: each row is traced once
-// and scored once, so a job is done at 2 * height.
+// Shared between the job and whoever watches it. Progress counts rows: each row is traced once,
+// traced twice over the sun's disc and scored once, so a job is done at 4 * height.
 struct JobControl {
     enum class Phase { Queued, Bvh, Rays, Scoring };
     std::atomic<bool> cancel{false};

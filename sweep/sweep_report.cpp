@@ -78,6 +78,14 @@ std::string shortName(const std::string& key) {
     if (key == "misclassified_pct") return "misclassified %";
     if (key == "flicker_F_pct") return "flicker F %";
     if (key == "filtered_error") return "filtered error";
+    if (key == "soft_filtered_error") return "filtered error vs the sun's disc";
+    if (key == "penumbra_width_abs_error_px") return "penumbra width error px";
+    if (key.ends_with("_pct")) {
+        std::string name = key.substr(0, key.size() - 4);
+        for (char& c : name)
+            if (c == '_') c = ' ';
+        return name + " %";
+    }
     return key;
 }
 
@@ -150,6 +158,10 @@ void writeAxisCharts(const fs::path& dir, const Manifest& m, const std::vector<P
 std::string yLabelOf(const std::string& key) {
     if (key == "filtered_error") return "filtered error (mean |filtered - truth|)";
     if (key == "flicker_F_pct") return "flicker F (% of sun-facing pixels per frame)";
+    if (key == "soft_filtered_error") return "filtered error against the sun's disc (mean |filtered - soft truth|)";
+    if (key == "penumbra_width_abs_error_px") return "penumbra width error (|filtered - true| mean width, px)";
+    if (key == "acne_pct" || key == "light_bleeding_pct" || key == "peter_panning_pct" || key == "missing_caster_pct")
+        return shortName(key) + " of sun-facing pixels (filtered, against the sun's disc)";
     return "misclassified (% of sun-facing pixels)";
 }
 

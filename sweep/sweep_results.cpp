@@ -47,6 +47,16 @@ Figures figuresOf(const metrics::PresetMeasurement& m) {
         {"aliased_pct", pct(m.density.all.aliasingShare)},
         {"flicker_F_pct", m.flicker ? pct(m.flicker->flipRate) : kNaN},
     };
+    // Against the soft truth of the sun's disc (metrics/soft_accuracy.h).
+    const metrics::ArtifactCounts& k = m.soft.all;
+    f.push_back({"soft_filtered_error", k.filteredError()});
+    f.push_back({"acne_pct", pct(k.share(k.acne))});
+    f.push_back({"light_bleeding_pct", pct(k.share(k.lightBleeding))});
+    f.push_back({"peter_panning_pct", pct(k.share(k.peterPanning))});
+    f.push_back({"missing_caster_pct", pct(k.share(k.missingCaster))});
+    f.push_back({"soft_edge_pct", pct(k.share(k.edge))});
+    f.push_back({"penumbra_width_error_px", m.soft.penumbra.errorPx()});
+    f.push_back({"penumbra_width_abs_error_px", std::abs(m.soft.penumbra.errorPx())});
     const bool cost = m.cost.has_value();
     f.push_back({"gpu_shadow_ms", cost ? m.cost->gpuShadowMs : kNaN});
     f.push_back({"gpu_main_ms", cost ? m.cost->gpuMainMs : kNaN});
@@ -132,11 +142,33 @@ Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& so
     }
 }
 
+const std::vector<std::pair<std::string, std::string>>& softErrorKeys() {
+    static const std::vector<std::pair<std::string, std::string>> keys{
+        {"soft-filtered", "soft_filtered_error"},     {"acne", "acne_pct"},
+        {"light-bleeding", "light_bleeding_pct"},     {"peter-panning", "peter_panning_pct"},
+        {"missing-caster", "missing_caster_pct"},     {"penumbra-width", "penumbra_width_abs_error_px"}};
+    return keys;
+}
+
+std::vector<std::string> errorChoices() {
+    std::vector<std::string> out{"misclassified", "filtered", "flicker"};
+    for (const auto& [name, key] : softErrorKeys()) out.push_back(name);
+    return out;
+}
+
+std::string errorNames() {
+    std::string out;
+    for (const std::string& n : errorChoices()) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
 std::string errorKey(const std::string& error) {
     if (error == "misclassified") return "misclassified_pct";
     if (error == "filtered") return "filtered_error";
     if (error == "flicker") return "flicker_F_pct";
-    throw std::invalid_argument("--error must be misclassified, filtered or flicker, got \"" + error + "\"");
+    for (const auto& [name, key] : softErrorKeys())
+        if (error == name) return key;
+    throw std::invalid_argument("--error must be one of " + errorNames() + ", got \"" + error + "\"");
 }
 
 }  // namespace st::sweep

@@ -51,11 +51,17 @@ Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, con
 nlohmann::ordered_json toJson(const Manifest& m);
 Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& source);
 
-// The figure the charts and the front minimise: "misclassified", "filtered" or "flicker".
+// The figure the charts and the front minimise: "misclassified", "filtered", "flicker", or one
+// against the soft truth: "soft-filtered", "acne", "light-bleeding", "peter-panning",
+// "missing-caster", "penumbra-width" (|filtered - true| mean width, px).
 struct ReportOptions {
     std::string error = "misclassified";
 };
 std::string errorKey(const std::string& error);  // "misclassified_pct", ...; throws for others
+std::vector<std::string> errorChoices();          // every name errorKey() takes
+std::string errorNames();                          // the same, comma-separated
+// The soft-truth names of errorChoices() and their figure keys.
+const std::vector<std::pair<std::string, std::string>>& softErrorKeys();
 
 // Writes every report file into `dir` from the points found (any subset of the manifest's).
 // Returns the ids of the front points.

@@ -61,6 +61,37 @@ void cascadeTable(UiFrame& f) {
     recordItem(f.state.rects, "accuracy.cascades");
 }
 
+// The artifacts.png colours of `measure` (metrics/metric_images.cpp).
+const ImVec4 kAcneColour{235 / 255.0f, 25 / 255.0f, 25 / 255.0f, 1.0f};
+const ImVec4 kBleedingColour{1.0f, 150 / 255.0f, 0.0f, 1.0f};
+const ImVec4 kPeterPanningColour{225 / 255.0f, 40 / 255.0f, 225 / 255.0f, 1.0f};
+const ImVec4 kMissingColour{60 / 255.0f, 110 / 255.0f, 255 / 255.0f, 1.0f};
+
+void softFigures(UiFrame& f) {
+    const SoftAccuracyCounts& k = f.in.accuracy.soft;
+    ImGui::Separator();
+    ImGui::TextUnformatted("Filtered, against the sun's disc");
+    ImGui::Text("%.2f deg sun, %d rays per px: filtered error %.4f", double(k.angularDiameter), k.rays,
+                k.filteredError);
+    ImGui::TextColored(kAcneColour, "acne %s (%zu px)", percent(k.share(k.acne)).c_str(), k.acne);
+    ImGui::SameLine();
+    ImGui::TextColored(kBleedingColour, "light bleeding %s (%zu px)", percent(k.share(k.lightBleeding)).c_str(),
+                       k.lightBleeding);
+    ImGui::TextColored(kPeterPanningColour, "peter-panning %s (%zu px)", percent(k.share(k.peterPanning)).c_str(),
+                       k.peterPanning);
+    ImGui::SameLine();
+    ImGui::TextColored(kMissingColour, "missing caster %s (%zu px)", percent(k.share(k.missingCaster)).c_str(),
+                       k.missingCaster);
+    ImGui::Text("Edge %s; penumbra %.2f px wide, true %.2f px", percent(k.share(k.edge)).c_str(),
+                k.penumbraFilteredPx, k.penumbraTruthPx);
+    recordItem(f.state.rects, "accuracy.soft");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The filtered shadow against the visible fraction of the sun's disc (light.angularDiameter).\n"
+                          "Acne: too dark where the truth is lit; bleeding: too light inside an umbra, more than k texels\n"
+                          "from its edge; peter-panning: too light within k texels of a contact; missing caster: a whole\n"
+                          "shadow too light (k = measure.artifactTexels).");
+}
+
 void figures(UiFrame& f) {
     const AccuracyView& a = f.in.accuracy;
     const AccuracyCounts& c = a.all;
@@ -76,6 +107,7 @@ void figures(UiFrame& f) {
     cascadeTable(f);
     for (const std::string& w : a.warnings) ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.2f, 1.0f), "%s", w.c_str());
     if (!a.warnings.empty()) recordItem(f.state.rects, "accuracy.warnings");
+    softFigures(f);
 }
 
 void stateLine(UiFrame& f) {

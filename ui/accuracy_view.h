@@ -25,6 +25,17 @@ struct AccuracyCounts {
     double share(std::size_t count) const { return receivers ? double(count) / double(receivers) : 0.0; }
 };
 
+// The filtered result against the soft truth of the sun's disc (metrics/soft_accuracy.h).
+struct SoftAccuracyCounts {
+    float angularDiameter = 0.0f;  // degrees
+    int rays = 0;
+    std::size_t receivers = 0;
+    double filteredError = 0.0;  // mean |filtered factor - visible fraction of the disc|
+    std::size_t acne = 0, lightBleeding = 0, peterPanning = 0, missingCaster = 0, edge = 0;
+    double penumbraTruthPx = 0.0, penumbraFilteredPx = 0.0;  // mean widths
+    double share(std::size_t count) const { return receivers ? double(count) / double(receivers) : 0.0; }
+};
+
 struct AccuracyView {
     enum class State {
         Off,        // the app computes nothing (the panel was never shown)
@@ -44,6 +55,7 @@ struct AccuracyView {
     std::vector<AccuracyCounts> cascades;
     AccuracyCounts beyond;      // past the shadow distance: drawn lit
     std::vector<std::string> warnings;  // Done: wasted maps, each with its likely fix (metrics/map_warnings.h)
+    SoftAccuracyCounts soft;
 };
 
 }  // namespace st::ui

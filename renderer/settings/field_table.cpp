@@ -79,6 +79,9 @@ std::vector<FieldInfo> lightRows() {
         {.path = "light.ambient", .label = "Ambient",
          .help = "Constant, never shadowed light that keeps shadowed areas readable.",
          .kind = K::Float, .min = 0, .max = 1, .step = 0.01, .shader = "ambient", ST_FIELD_ACCESS(light.ambient)},
+        {.path = "light.angularDiameter", .label = "Sun angular diameter",
+         .help = "The sun's disc as seen from the scene: 0.53 is the real sun; it sets the width of true penumbrae (0 = a point light).",
+         .unit = "deg", .kind = K::Float, .min = 0, .max = 10, .step = 0.01, ST_FIELD_ACCESS(light.angularDiameter)},
     };
 }
 
@@ -194,12 +197,25 @@ std::vector<FieldInfo> pathRows() {
     };
 }
 
+std::vector<FieldInfo> measureRows() {
+    return {
+        {.path = "measure.sunRays", .label = "Sun rays",
+         .help = "Rays per pixel over the sun's disc for the soft ground truth; more rays give smoother true penumbrae at linear cost.",
+         .unit = "rays", .kind = K::Int, .min = 1, .max = 1024, .step = 1, .change = C::None,
+         ST_FIELD_ACCESS(measure.sunRays)},
+        {.path = "measure.artifactTexels", .label = "Artifact distance",
+         .help = "Light more than k texels inside a true shadow is bleeding; light within k texels of a contact is peter-panning.",
+         .unit = "texels", .kind = K::Float, .min = 0, .max = 64, .step = 0.1, .change = C::None,
+         ST_FIELD_ACCESS(measure.artifactTexels)},
+    };
+}
+
 #undef ST_FIELD_ACCESS
 
 std::vector<FieldInfo> buildTable() {
     std::vector<FieldInfo> table;
     for (auto&& rows : {sceneAndCameraRows(), lightRows(), cascadeSplitRows(), cascadeFitRows(),
-                        filterAndBiasRows(), outputRows(), pathRows()}) {
+                        filterAndBiasRows(), outputRows(), pathRows(), measureRows()}) {
         table.insert(table.end(), rows.begin(), rows.end());
     }
     return table;

@@ -123,6 +123,7 @@ struct LightSettings {
     float elevation = 40.0f;  // degrees above the horizon; 90 = overhead (light travels straight down)
     float intensity = 1.0f;   // multiplier of the direct (Lambert) term
     float ambient = 0.15f;    // constant term, never shadowed
+    float angularDiameter = 0.53f;  // degrees, the sun's disc (0.53 = the real sun); 0 = a point sun
     bool operator==(const LightSettings&) const = default;
 };
 
@@ -184,6 +185,13 @@ struct PathSettings {
     bool operator==(const PathSettings&) const = default;
 };
 
+// How `measure` scores a frame (docs/architecture.md#the-suns-disc, #artifact-classes).
+struct MeasureSettings {
+    int sunRays = 16;            // rays over the sun's disc per pixel for the soft truth
+    float artifactTexels = 2.0f; // k: light bleeding is more, peter-panning within, k texels of an edge / contact
+    bool operator==(const MeasureSettings&) const = default;
+};
+
 struct Settings {
     std::string scene = "builtin:yard";  // "builtin:NAME" or a glTF path relative to the preset
     std::string notes;                   // free text: what of the source system is not reproduced
@@ -195,6 +203,7 @@ struct Settings {
     BiasSettings bias;
     OutputSettings output;
     PathSettings path;
+    MeasureSettings measure;
     bool operator==(const Settings&) const = default;
 };
 

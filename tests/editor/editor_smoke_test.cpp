@@ -104,6 +104,8 @@ TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << log;
     const std::string editorLog = readText(log);
     ASSERT_NE(editorLog.find("accuracy: done in"), std::string::npos) << editorLog;
+    EXPECT_NE(editorLog.find("against the sun's disc (0.53 deg, 16 rays): filtered error"), std::string::npos)
+        << "the panel's soft-truth figures";
 
     // The scene viewport the panels leave ("accuracy: done in 1.23 s (520x383)"), measured at its size.
     const std::string size = sceneSize(editorLog);

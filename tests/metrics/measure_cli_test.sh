@@ -22,15 +22,19 @@ run measure "$work/with-path.json" --out "$work/out" --size 96x64 --frames 1
 check "good preset exits 0" rc 0
 check "one summary line names the preset and timings" out_has "with-path: 96x64 misclassified"
 check "summary has the ground truth time" out_has "ground truth"
-for f in metrics.json truth.png errors.png texel-density.png flicker.png path.png; do
+check "summary has the soft truth and its time" out_has "against the sun's disc (0.53 deg, 16 rays)"
+check "summary has the soft truth time" out_has ", soft truth "
+for f in metrics.json truth.png errors.png artifacts.png texel-density.png flicker.png path.png; do
   check "writes $f" test -s "$work/out/with-path/$f"
 done
 m="$work/out/with-path/metrics.json"
 for key in misclassified falseShadow falseLight gross filteredError texelDensity p95 aliasingShare flipRate \
-           meanHardStdDev gpuShadowMs shadowMapBytes texelsCovered groundTruthMs totalMs; do
+           meanHardStdDev gpuShadowMs shadowMapBytes texelsCovered groundTruthMs totalMs \
+           soft angularDiameter sunRays acne lightBleeding peterPanning missingCaster penumbraWidth softTruthMs; do
   check "metrics.json has $key" json_has "$m" "$key"
 done
 check "truth image has the size" bash -c "oiiotool --info '$work/out/with-path/truth.png' | grep -q '96 x   64'"
+check "errors.png has its legend under the image" bash -c "oiiotool --info '$work/out/with-path/errors.png' | grep -qE '96 x +[0-9]{3}'"
 check "no temporary files left" bash -c "! ls -A '$work/out/with-path' | grep -q tmp"
 
 # A bad preset is reported and skipped; the good one is still measured.

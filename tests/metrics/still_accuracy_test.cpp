@@ -101,7 +101,9 @@ TEST(StillAccuracyTest, MatchesTheDirectComputation) {
     expectSameCounts(job->report.cascades[0], want.cascades[0]);
     EXPECT_GT(want.all.falseLight(), 10u);  // the box's shadow, which the map missed
     EXPECT_GT(want.all.falseShadow(), 5u);  // the band
-    EXPECT_EQ(control.rowsDone.load(), 2 * 48);
+    EXPECT_EQ(control.rowsDone.load(), 4 * 48);  // traced, traced twice over the sun's disc, scored
+    EXPECT_EQ(job->soft.all.receivers, want.all.receivers);
+    EXPECT_GT(job->soft.all.missingCaster + job->soft.all.edge, 10u);  // the missed shadow, against the disc too
     EXPECT_GT(job->bvhMs, 0.0);
 }
 
@@ -218,7 +220,7 @@ TEST(AccuracyWorkerTest, CancelledJobIsNeverHandedOver) {
 // it to finish (nor hang or crash).
 TEST(AccuracyWorkerTest, DestructorCancelsAndJoinsARunningJob) {
     StillFrame frame = boxFrame(boxScene(), 400, 1000);  // 0.4 M rays on one thread: seconds
-    const int rows = 2 * frame.samples.height;            // traced, then scored
+    const int rows = 4 * frame.samples.height;            // traced, over the disc twice, then scored
     struct Ending {
         int count = 0;
         bool cancelled = false;

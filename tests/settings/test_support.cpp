@@ -15,7 +15,7 @@ Settings everyFieldChanged() {
     s.ground = true;
     s.camera = {.position = {1.5f, 2.25f, -3.0f}, .target = {0.5f, 0.0f, 1.0f}, .fovY = 45.5f,
                 .nearPlane = 0.25f, .farPlane = 250.0f};
-    s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f};
+    s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f, .angularDiameter = 1.5f};
     s.cascades = {.count = 3, .scheme = SplitScheme::Manual, .lambda = 0.8f, .manualSplits = {10.0f, 40.5f},
                   .shadowDistance = 150.0f, .depthBounds = DepthBounds::Fit, .mapSize = 2048, .fit = FitMode::Sphere, .stabilize = true,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
@@ -26,6 +26,7 @@ Settings everyFieldChanged() {
     s.path = {.frames = 12,
               .keyframes = {{.position = {0.0f, 2.0f, 5.0f}, .target = {0.0f, 1.0f, -5.0f}, .fovY = 50.0f},
                             {.position = {0.25f, 2.0f, 5.0f}, .target = {0.25f, 1.0f, -5.0f}, .fovY = 55.5f}}};
+    s.measure = {.sunRays = 32, .artifactTexels = 3.5f};
     return s;
 }
 

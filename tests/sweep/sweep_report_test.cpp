@@ -77,3 +77,26 @@ TEST(SweepReportTest, FrontPresetsFindARelativeSceneFromTheirOwnFolder) {
     const std::filesystem::path scene = dir.path() / "out" / "front" / saved["scene"].get<std::string>();
     EXPECT_TRUE(std::filesystem::exists(scene)) << saved["scene"];
 }
+
+// Every --error choice names a figure a measured point has, the soft-truth ones their columns.
+TEST(SweepReportTest, EveryErrorChoiceIsAFigureOfAPoint) {
+    metrics::PresetMeasurement m;
+    m.soft.all.receivers = 200;
+    m.soft.all.acne = 10;
+    m.soft.all.lightBleeding = 4;
+    m.soft.penumbra.truthPx = 3.0;
+    m.soft.penumbra.filteredPx = 1.5;
+    const Figures f = figuresOf(m);
+    auto value = [&](const std::string& key) {
+        for (const auto& [k, v] : f)
+            if (k == key) return v;
+        ADD_FAILURE() << key << " is not a figure";
+        return 0.0;
+    };
+    for (const std::string& choice : errorChoices()) value(errorKey(choice));
+    EXPECT_DOUBLE_EQ(value(errorKey("acne")), 5.0);
+    EXPECT_DOUBLE_EQ(value(errorKey("light-bleeding")), 2.0);
+    EXPECT_DOUBLE_EQ(value(errorKey("penumbra-width")), 1.5);
+    EXPECT_DOUBLE_EQ(value("penumbra_width_error_px"), -1.5);
+    EXPECT_THROW(errorKey("sharpness"), std::invalid_argument);
+}
