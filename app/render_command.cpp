@@ -28,6 +28,12 @@ void checkDeviceLimits(const Settings& s, const fs::path& preset) {
         throw std::runtime_error(preset.string() + ": cascades.mapSize: " +
                                  std::to_string(s.cascades.mapSize) +
                                  " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
+    // The atlas is wider than any of its tiles: check the textures the layout allocates.
+    for (const csm::MapTexture& t : csm::planStorage(s.cascades).textures)
+        if (t.width > maxSize || t.height > maxSize)
+            throw std::runtime_error(preset.string() + ": cascades.storage: a " + std::to_string(t.width) + "x" +
+                                     std::to_string(t.height) + " shadow texture exceeds GL_MAX_TEXTURE_SIZE " +
+                                     std::to_string(maxSize));
     if (s.output.width > maxSize || s.output.height > maxSize)
         throw std::runtime_error(preset.string() + ": output size exceeds GL_MAX_TEXTURE_SIZE " +
                                  std::to_string(maxSize));

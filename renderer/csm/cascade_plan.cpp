@@ -40,10 +40,12 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.stabilize = cs.stabilize;
     fp.zExtension = cs.zExtension;
     fp.zExtensionDistance = cs.zExtensionDistance;
-    fp.mapSize = cs.mapSize;
     fp.wsSceneBounds = wsSceneBounds;
-    for (int i = 0; i < cs.count; ++i)
+    plan.storage = planStorage(cs);
+    for (int i = 0; i < cs.count; ++i) {
+        fp.mapSize = plan.storage.tiles[static_cast<std::size_t>(i)].size;  // texel size and snapping per map
         plan.cascades.push_back(fitCascade(plan.camera, plan.splits, i, plan.wsLightDir, fp));
+    }
     return plan;
 }
 

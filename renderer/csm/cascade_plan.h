@@ -3,6 +3,7 @@
 // uploaded (no cascade math in shaders). Also what tests and metrics use to reason about a frame.
 #include "renderer/csm/frustum.h"
 #include "renderer/csm/light_fit.h"
+#include "renderer/csm/storage_layout.h"
 #include "renderer/settings/settings.h"
 
 #include <vector>
@@ -16,6 +17,7 @@ struct CascadePlan {
     glm::vec3 wsLightDir{0.0f, -1.0f, 0.0f};  // direction the light travels
     std::vector<float> splits;                // count + 1 view depths
     std::vector<CascadeFit> cascades;
+    StorageLayout storage;                    // where each cascade's map lives (cascades.storage)
 };
 
 CameraParams cameraFromSettings(const CameraSettings& c, float aspect);

@@ -25,7 +25,7 @@ struct FitParams {
     bool stabilize = false;           // snap the box's x,y origin to whole texels
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
-    int mapSize = 1024;               // texels per side
+    int mapSize = 1024;               // texels per side of this cascade's map
     Aabb wsSceneBounds;               // all casters; used by SceneBounds
 };
 
@@ -35,6 +35,7 @@ struct CascadeFit {
     glm::mat4 viewProj{1.0f};   // lsProj * lsView: world -> light clip
     Aabb lsBox;                 // box in light view space; +Z toward the sun (max.z is the near side)
     float texelWorldSize = 0.0f;// metres per texel along x (== y for sphere fit)
+    int mapSize = 0;            // texels per side of this cascade's map (FitParams::mapSize)
     float vsNear = 0.0f;        // view depth range the cascade covers (scene fit: from camera near)
     float vsFar = 0.0f;
 };

@@ -14,6 +14,7 @@ struct CascadeStats {
     float vsFar = 0.0f;
     glm::vec3 lsExtent{0.0f};      // light box size x, y, z (z = depth range), metres
     float texelWorldSize = 0.0f;   // metres per shadow texel
+    int mapSize = 0;               // texels per side of this cascade's map
     int casterDraws = 0;           // draw calls after culling against the light box
     std::size_t casterTriangles = 0;
     double gpuMs = 0.0;            // this cascade's depth pass

@@ -24,7 +24,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds);
     stats.splits = plan_.splits;
     target_.ensure(s.output.width, s.output.height);
-    shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
+    shadowMaps_.ensure(plan_.storage);
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
     cascadeBlock_.upload(cascadeBlock(s, plan_));
@@ -47,13 +47,10 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
     gpu::DebugGroup group("shadow pass");
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     gpu::PassState state;
-    state.framebuffer = shadowMaps_.framebuffer();
-    state.viewport = {0, 0, shadowMaps_.size(), shadowMaps_.size()};
     state.depthTest = state.depthWrite = true;
     state.cullFace = GL_NONE;  // thin and open casters must cast from both sides
     state.depthClamp = pancake;
     state.colorWrite = false;  // depth only
-    gpu::applyPassState(state);
     glUseProgram(depthProgram_.id());
     scene_.bindGeometry();
     frameBlock_.bind(ST_BLOCK_FRAME);
@@ -62,10 +59,9 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
         const std::string name = "cascade " + std::to_string(i);
         gpu::DebugGroup cascadeGroup(name.c_str());
         const csm::CascadeFit& fit = plan_.cascades[i];
-        CascadeStats cs{fit.vsNear, fit.vsFar, fit.lsBox.extent(), fit.texelWorldSize};
+        CascadeStats cs{fit.vsNear, fit.vsFar, fit.lsBox.extent(), fit.texelWorldSize, fit.mapSize};
         timers_.begin(i);
-        shadowMaps_.attachLayer(i);
-        glClear(GL_DEPTH_BUFFER_BIT);
+        shadowMaps_.beginCascade(i, state);  // its layer or tile: viewport, scissor, cleared
         viewBlock_.upload({fit.viewProj});
         for (const DrawItem& item : scene_.scene().draws) {
             if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
@@ -113,8 +109,7 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     viewBlock_.bind(ST_BLOCK_VIEW);
     bindShadingInputs();
     for (const DrawItem& item : scene_.scene().draws) scene_.draw(item, FaceCulling::PerMaterial);
-    glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
-    glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    shadowMaps_.unbindSamplers();
     timers_.end(s.cascades.count);
 }
 

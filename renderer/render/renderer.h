@@ -1,5 +1,5 @@
 #pragma once
-// Draws one frame of a Settings value: a depth pass per cascade into a texture array, then the
+// Draws one frame of a Settings value: a depth pass per cascade into its map (ShadowMaps), then the
 // main pass into an offscreen colour target. Knows nothing about windows: headless replay reads
 // the pixels back, the editor blits or shows the texture.
 #include "renderer/csm/cascade_plan.h"
@@ -40,7 +40,7 @@ public:
     std::vector<std::uint8_t> readRgba8() const { return target_.readRgba8(); }
     GLuint colorTexture() const { return target_.colorTexture(); }
     GLuint framebuffer() const { return target_.framebuffer(); }
-    GLuint shadowMapTexture() const { return shadowMaps_.texture(); }
+    GLuint shadowMapTexture(int cascade = 0) const { return shadowMaps_.texture(cascade); }
     GLuint depthTexture() const { return target_.depthTexture(); }  // main pass depth, D32F
     const csm::CascadePlan& plan() const { return plan_; }  // of the last render()
     // Binds the frame and cascade blocks of the last render() (ST_BLOCK_FRAME, ST_BLOCK_CASCADES)

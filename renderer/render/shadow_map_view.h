@@ -1,6 +1,7 @@
 #pragma once
-// Each cascade's depth layer rendered into a small RGBA8 texture with the depth range the scene
-// occupies stretched to a visible grey ramp, for the editor's shadow-map viewer.
+// Each cascade's depth map rendered into a small RGBA8 texture with the depth range the scene
+// occupies stretched to a visible grey ramp, for the editor's shadow-map viewer; with the atlas
+// storage also the whole atlas as one image, each tile outlined where it lies.
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/gpu/gl.h"
 #include "renderer/gpu/uniform_buffer.h"
@@ -15,19 +16,28 @@ namespace st {
 class ShadowMapView {
 public:
     ShadowMapView();
-    // Re-renders every layer's tile (tileSize² texels each).
+    // Re-renders every cascade's tile (tileSize² texels each) and, for an atlas, the atlas image
+    // (2 tileSize wide, the atlas's aspect).
     void update(const ShadowMaps& maps, const csm::CascadePlan& plan, const csm::Aabb& wsSceneBounds, int tileSize);
     GLuint layerTexture(int layer) const { return tiles_[layer].id(); }
     int layers() const { return static_cast<int>(tiles_.size()); }
+    GLuint atlasTexture() const { return atlas_.id(); }  // 0 unless the storage is an atlas
+    int atlasWidth() const { return atlasWidth_; }
+    int atlasHeight() const { return atlasHeight_; }
 
 private:
+    void drawCascade(const ShadowMaps& maps, const csm::CascadePlan& plan, const csm::Aabb& wsSceneBounds, int i,
+                     bool border);
     gpu::Program program_;
     gpu::VertexArray emptyVao_;
     gpu::Framebuffer fbo_;
     gpu::Sampler raw_;  // no depth compare: read the stored depth itself
     gpu::UniformBuffer<gpu_if::OverlayBlock> overlay_;
     std::vector<gpu::Texture> tiles_;
-    // Tiles replaced by the last update(), kept one more update: a UI draw list recorded before
+    gpu::Texture atlas_;
+    int atlasWidth_ = 0;
+    int atlasHeight_ = 0;
+    // Textures replaced by the last update(), kept one more update: a UI draw list recorded before
     // this frame's update() may still name them.
     std::vector<gpu::Texture> retired_;
     int tileSize_ = 0;
