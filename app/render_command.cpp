@@ -83,9 +83,15 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
         const fs::path png = outDir / (stem + ".png");
         writeImageAtomic(png, img);
         writeTextAtomic(outDir / (stem + ".json"), toJsonText(stats));
-        std::printf("wrote %s (%dx%d, view %s, %d x %d² maps, shadow %.1f ms, main %.1f ms)\n",
-                    png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(),
-                    s.cascades.count, s.cascades.mapSize, stats.gpuShadowMs, stats.gpuMainMs);
+        // "4 x 1024² maps" when every cascade has one size, else each size; then the storage.
+        std::string maps = std::to_string(s.cascades.count) + " x " + std::to_string(s.cascades.mapSize) + "²";
+        if (!s.cascades.mapSizes.empty()) {
+            maps.clear();
+            for (int size : s.cascades.mapSizes) maps += (maps.empty() ? "" : "+") + std::to_string(size) + "²";
+        }
+        std::printf("wrote %s (%dx%d, view %s, %s maps (%s), shadow %.1f ms, main %.1f ms)\n",
+                    png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(), maps.c_str(),
+                    enumName(s.cascades.storage).c_str(), stats.gpuShadowMs, stats.gpuMainMs);
         std::fflush(stdout);
     };
 }
