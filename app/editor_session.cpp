@@ -230,7 +230,12 @@ ui::UiInputs EditorSession::uiInputs() {
     in.stats = &stats_;
     in.cpuFrameMs = cpuFrameMs_;
     for (int i = 0; i < shadowTiles_->layers(); ++i) in.shadowLayers.push_back(tex(shadowTiles_->layerTexture(i)));
-    in.shadowMapSize = valid_.cascades.mapSize;
+    for (const CascadeStats& c : stats_.cascades) in.shadowMapSizes.push_back(c.mapSize);
+    if (shadowTiles_->atlasTexture()) {
+        in.shadowAtlas = tex(shadowTiles_->atlasTexture());
+        in.shadowAtlasWidth = renderer_->shadowMaps().layout().textures.front().width;
+        in.shadowAtlasHeight = renderer_->shadowMaps().layout().textures.front().height;
+    }
     in.sideView = pip_.colorTexture() ? tex(pip_.colorTexture()) : tex(0);
     in.presetFiles = presetFiles_;
     in.statusLine = status_;

@@ -29,6 +29,12 @@ void checkDeviceLimits(const Settings& s, const fs::path& preset) {
         throw std::runtime_error(preset.string() + ": cascades.mapSize: " +
                                  std::to_string(s.cascades.mapSize) +
                                  " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
+    // The atlas is wider than any of its tiles: check the textures the layout allocates.
+    for (const csm::MapTexture& t : csm::planStorage(s.cascades).textures)
+        if (t.width > maxSize || t.height > maxSize)
+            throw std::runtime_error(preset.string() + ": cascades.storage: a " + std::to_string(t.width) + "x" +
+                                     std::to_string(t.height) + " shadow texture exceeds GL_MAX_TEXTURE_SIZE " +
+                                     std::to_string(maxSize));
     if (s.output.width > maxSize || s.output.height > maxSize)
         throw std::runtime_error(preset.string() + ": output size exceeds GL_MAX_TEXTURE_SIZE " +
                                  std::to_string(maxSize));
@@ -80,9 +86,15 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
         const fs::path png = outDir / (stem + ".png");
         writeImageAtomic(png, img);
         writeTextAtomic(outDir / (stem + ".json"), toJsonText(stats));
-        std::printf("wrote %s (%dx%d, view %s, %d x %d² maps, shadow %.1f ms, main %.1f ms)\n",
-                    png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(),
-                    s.cascades.count, s.cascades.mapSize, stats.gpuShadowMs, stats.gpuMainMs);
+        // "4 x 1024² maps" when every cascade has one size, else each size; then the storage.
+        std::string maps = std::to_string(s.cascades.count) + " x " + std::to_string(s.cascades.mapSize) + "²";
+        if (!s.cascades.mapSizes.empty()) {
+            maps.clear();
+            for (int size : s.cascades.mapSizes) maps += (maps.empty() ? "" : "+") + std::to_string(size) + "²";
+        }
+        std::printf("wrote %s (%dx%d, view %s, %s maps (%s), shadow %.1f ms, main %.1f ms)\n",
+                    png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(), maps.c_str(),
+                    enumName(s.cascades.storage).c_str(), stats.gpuShadowMs, stats.gpuMainMs);
         std::fflush(stdout);
     };
 }

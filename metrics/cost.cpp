@@ -36,7 +36,8 @@ CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vecto
         c.draws = last.cascades[i].casterDraws;
         c.triangles = last.cascades[i].casterTriangles;
         c.gpuMs = medianOf(frames, [i](const FrameStats& f) { return f.cascades[i].gpuMs; });
-        c.texels = std::size_t(mapSize) * std::size_t(mapSize);
+        const int side = last.cascades[i].mapSize > 0 ? last.cascades[i].mapSize : mapSize;  // its own size
+        c.texels = std::size_t(side) * std::size_t(side);
         c.texelsCovered = i < covered.size() ? covered[i] : 0;
         r.draws += c.draws;
         r.triangles += c.triangles;

@@ -14,7 +14,7 @@ struct CascadeCost {
     int draws = 0;
     std::size_t triangles = 0;
     double gpuMs = 0.0;  // median
-    std::size_t texels = 0;         // mapSize^2
+    std::size_t texels = 0;         // its mapSize^2
     std::size_t texelsCovered = 0;  // depth written below the clear value
 };
 
@@ -35,7 +35,8 @@ struct CostReport {
 double median(std::vector<double> values);  // 0 for none; the upper median for an even count
 
 // `frames`: the timed frames' statistics (not the warm-up), all of the same settings.
-// `covered`: texels written per cascade (coveredShadowTexels), `mapSize` texels per side.
+// `covered`: texels written per cascade (coveredShadowTexels); each cascade has its stats' mapSize
+// texels per side (`mapSize` when the stats carry none).
 CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vector<std::size_t>& covered, int mapSize);
 
 }  // namespace st::metrics

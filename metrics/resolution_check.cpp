@@ -11,8 +11,9 @@ namespace st::metrics {
 
 ResolutionCheck::ResolutionCheck(const GroundTruth& truth, const csm::CascadePlan& plan, int mapSize, glm::vec3 wsEye,
                                  RayOffset offset)
-    : truth_(&truth), wsToSun_(-plan.wsLightDir), wsEye_(wsEye), mapSize_(mapSize), offset_(offset) {
+    : truth_(&truth), wsToSun_(-plan.wsLightDir), wsEye_(wsEye), offset_(offset) {
     for (const csm::CascadeFit& fit : plan.cascades) {
+        sizes_.push_back(double(fit.mapSize > 0 ? fit.mapSize : mapSize));
         const glm::dmat4 m = glm::dmat4(csm::clipToTexture() * fit.viewProj);
         toTexture_.push_back(m);
         fromTexture_.push_back(glm::inverse(m));
@@ -28,7 +29,7 @@ constexpr double kOffsets[5][2] = {{0, 0}, {-kJitter, 0}, {kJitter, 0}, {0, -kJi
 bool ResolutionCheck::truthUnderTexel(glm::dvec2 tsCentre, double tsZ, glm::dvec3 p, glm::dvec3 n, int cascade,
                                       bool lit) const {
     const glm::dvec3 light = -glm::dvec3(wsToSun_);
-    const double size = double(mapSize_);
+    const double size = sizes_[std::size_t(cascade)];
     for (const auto& d : kOffsets) {
         const glm::dvec4 ts(tsCentre + glm::dvec2(d[0], d[1]) / size, tsZ, 1.0);
         const glm::dvec3 x(fromTexture_[std::size_t(cascade)] * ts);
@@ -44,7 +45,7 @@ bool ResolutionCheck::explains(glm::vec3 wsPoint, glm::vec3 wsNormal, int cascad
     const glm::dvec3 p(wsPoint), n(wsNormal);
     if (glm::dot(n, glm::dvec3(wsToSun_)) <= 0.0) return false;  // not a receiver: no plane to land on
     const glm::dvec4 ts = toTexture_[std::size_t(cascade)] * glm::dvec4(p, 1.0);
-    const double size = double(mapSize_);
+    const double size = sizes_[std::size_t(cascade)];
     // The lower-left of the 2x2 texel centres around ts: centres sit at (i + 0.5) / size.
     const double i0 = std::floor(ts.x * size - 0.5), j0 = std::floor(ts.y * size - 0.5);
     for (int dj = 0; dj < 2; ++dj) {

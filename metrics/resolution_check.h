@@ -22,7 +22,8 @@ namespace st::metrics {
 
 class ResolutionCheck {
 public:
-    // `plan` is the frame whose maps were tested; mapSize texels per side.
+    // `plan` is the frame whose maps were tested; each cascade's map has its own fit's mapSize
+    // texels per side (cascades.mapSizes), `mapSize` for fits that carry none.
     ResolutionCheck(const GroundTruth& truth, const csm::CascadePlan& plan, int mapSize, glm::vec3 wsEye,
                     RayOffset offset = {});
 
@@ -47,7 +48,7 @@ private:
     std::vector<glm::dmat4> fromTexture_;  // the inverse
     glm::vec3 wsToSun_;
     glm::vec3 wsEye_;
-    int mapSize_;
+    std::vector<double> sizes_;  // texels per side, per cascade
     RayOffset offset_;
 };
 

@@ -44,6 +44,13 @@
 #define ST_FILTER_PCF_NXN 2
 #define ST_FILTER_COUNT 3
 
+// CascadeStorage: one depth array layer per cascade; one atlas texture with a tile per cascade
+// (seed 003); one texture per cascade (seed 002)
+#define ST_STORAGE_ARRAY 0
+#define ST_STORAGE_ATLAS 1
+#define ST_STORAGE_TEXTURES 2
+#define ST_STORAGE_COUNT 3
+
 // View (Side draws the shaded scene from the orbit camera: main.frag shades it as SHADED)
 #define ST_VIEW_SHADED 0
 #define ST_VIEW_CASCADES 1

@@ -34,6 +34,10 @@
 // Shader storage binding points.
 #define ST_STORAGE_REDUCE 0          // depth_bounds_comp.glsl's result (renderer/render/depth_bounds_pass.cpp)
 
+// Storage "textures": cascade i's own depth texture (a one-layer array) on unit
+// ST_BINDING_CASCADE_MAPS + i, linear compare (shadow_sampling.glsl reads it through a switch).
+#define ST_BINDING_CASCADE_MAPS 8
+
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws
 #define ST_ATTRIB_NORMAL 1    // ws, scene vertices
@@ -54,12 +58,18 @@
 
 // One cascade's values, an element of CascadeBlock::cascade.
 #define ST_CASCADE_DATA(M, A)                                                                     \
-    M(mat4, shadowMatrix)  /* ws -> shadow texture space (ts) */                                  \
+    M(mat4, shadowMatrix)  /* ws -> ts of its texture (atlas: the tile matrix folded in) */       \
     M(vec4, tint)          /* linear RGB of the cascades view and the side view's wireframe */    \
     M(float, vsNear)       /* view depth where the slice starts, metres */                        \
     M(float, vsFar)        /* view depth where it ends, metres */                                 \
     M(float, texelWorld)   /* metres per texel */                                                 \
-    M(float, depthRange)   /* metres from the light box's near to its far plane */
+    M(float, depthRange)   /* metres from the light box's near to its far plane */                \
+    M(vec4, tileBounds)    /* the cascade's tile in its texture, uv: x0, y0, x1, y1 */            \
+    M(vec4, uvPerTexel)    /* xy: one texel of its texture in uv (atlas: 1/width, 1/height); zw 0 */\
+    M(float, padding)      /* atlas: texels of lit border around the tile; else 0 */              \
+    M(int, layer)          /* array layer holding it (array storage: i; else 0) */                \
+    M(int, cascadeDataPad0)                                                                       \
+    M(int, cascadeDataPad1)
 
 // Once per frame: how every pixel picks, biases and filters its cascade.
 #define ST_CASCADE_BLOCK(M, A)                                                                    \
@@ -68,7 +78,7 @@
     M(float, blendBand)    /* fraction of a cascade's range cross-faded into the next */          \
     M(int, filterKind)     /* ST_FILTER_* */                                                      \
     M(int, filterSize)     /* taps per side of the NxN filter */                                  \
-    M(int, mapSize)        /* texels per side */                                                  \
+    M(int, storage)        /* ST_STORAGE_*: where each cascade's map is sampled */                \
     M(float, biasConstant) /* metres */                                                           \
     M(float, biasSlope)    /* texels per unit tan(angle to the sun) */                            \
     M(float, normalOffset) /* texels */                                                           \
@@ -90,7 +100,12 @@
     M(float, brightness)   /* lines: multiplies the vertex colour */                              \
     M(int, layer)          /* depth view: the array layer shown */                                \
     M(float, depthLo)      /* depth view: stored depth shown brightest */                         \
-    M(float, depthHi)      /* depth view: stored depth shown darkest */
+    M(float, depthHi)      /* depth view: stored depth shown darkest */                           \
+    M(vec4, uvRect)        /* depth view: the tile shown, uv in its texture: x0, y0, x1, y1 */    \
+    M(int, tileBorder)     /* depth view: bool, outline the tile (the atlas image) */             \
+    M(int, overlayPad0)                                                                           \
+    M(int, overlayPad1)                                                                           \
+    M(int, overlayPad2)
 
 // The depth-bounds reduction (depth_bounds_comp.glsl): how a depth texel becomes a sample.
 #define ST_REDUCE_BLOCK(M, A)                                                                     \

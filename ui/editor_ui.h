@@ -43,7 +43,11 @@ struct UiInputs {
     double cpuFrameMs = 0.0;                 // wall time of the previous frame (the CPU plot)
     std::vector<ImTextureID> shadowLayers;   // one GL texture per cascade, depth already remapped for
                                              // display; shown with texel row 0 at the bottom
-    int shadowMapSize = 0;                   // texels per side of those layers
+    std::vector<int> shadowMapSizes;         // texels per side of each cascade's map
+    ImTextureID shadowAtlas = nullptr;       // storage "atlas": the whole atlas, tiles outlined;
+                                             // shown instead of the per-cascade tiles
+    int shadowAtlasWidth = 0;                // the atlas's texels
+    int shadowAtlasHeight = 0;
     ImTextureID sideView = nullptr;          // picture-in-picture image (the side camera, or the main
                                              // view when swapped); nullptr hides the window
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order

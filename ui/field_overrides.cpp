@@ -3,6 +3,7 @@
 #include "renderer/csm/limits.h"
 #include "renderer/scene/scene.h"
 #include "ui/document_actions.h"
+#include "renderer/settings/enum_names.h"
 #include "ui/field_rules.h"
 #include "ui/field_widgets.h"
 
@@ -99,8 +100,14 @@ bool drawMapSize(const FieldInfo& field, UiFrame& f) {
     recordItem(f.state.rects, std::string(field.path));
     drawHelpMarker(field);
     const int size = f.s.cascades.mapSize;
-    ImGui::TextDisabled("  %d x %d x %d x %zu B = %s of shadow maps", count, size, size, csm::kShadowTexelBytes,
-                        formatBytes(csm::shadowMapBytes(count, size)).c_str());
+    if (f.s.cascades.storage == CascadeStorage::Array) {
+        ImGui::TextDisabled("  %d x %d x %d x %zu B = %s of shadow maps", count, size, size, csm::kShadowTexelBytes,
+                            formatBytes(csm::shadowMapBytes(count, size)).c_str());
+    } else if (f.in.stats) {
+        // An atlas's padding and packing, or sizes per cascade: the renderer's own figure.
+        ImGui::TextDisabled("  %s of shadow maps (%s storage, last frame)", formatBytes(f.in.stats->shadowMapBytes).c_str(),
+                            enumName(f.s.cascades.storage).c_str());
+    }
     return changed;
 }
 

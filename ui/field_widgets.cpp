@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -186,6 +187,43 @@ bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects, FieldE
     return changed && storeField(field, s, values);
 }
 
+// One combo of the legal values per element (cascades.mapSizes: 256..8192), then Add / Remove.
+bool editIntList(const FieldInfo& field, Settings& s) {
+    const FieldValue current = field.get(s);
+    const auto* stored = std::get_if<std::vector<int>>(&current);
+    if (!stored) return showUnsupported(field);
+    std::vector<int> values = *stored;
+    const std::vector<int> choices = powerOfTwoChoices(field);
+    bool changed = false;
+    ImGui::TextUnformatted(labelOf(field).c_str());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        const std::string label = "[" + std::to_string(i) + "]";
+        if (field.powerOfTwo && ImGui::BeginCombo(label.c_str(), std::to_string(values[i]).c_str())) {
+            for (int choice : choices)
+                if (ImGui::Selectable(std::to_string(choice).c_str(), choice == values[i])) {
+                    changed = changed || choice != values[i];
+                    values[i] = choice;
+                }
+            ImGui::EndCombo();
+        } else if (!field.powerOfTwo && ImGui::InputInt(label.c_str(), &values[i])) {
+            values[i] = legalInt(field, values[i], (*stored)[i]);
+            changed = true;
+        }
+        ImGui::PopID();
+    }
+    if (ImGui::SmallButton("Add")) {
+        values.push_back(values.empty() ? static_cast<int>(field.max > 1024 ? 1024 : field.min) : values.back());
+        changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Remove last") && !values.empty()) {
+        values.pop_back();
+        changed = true;
+    }
+    return changed && storeField(field, s, values);
+}
+
 bool dispatch(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits& edits) {
     switch (field.kind) {
         case FieldKind::Float: return editFloat(field, s, edits);
@@ -195,6 +233,7 @@ bool dispatch(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits&
         case FieldKind::String: return editString(field, s);
         case FieldKind::Vec3: return editVec3(field, s, edits);
         case FieldKind::FloatList: return editFloatList(field, s, rects, edits);
+        case FieldKind::IntList: return editIntList(field, s);
         default: return showUnsupported(field);  // a kind added to the table after this code
     }
 }

@@ -1,5 +1,5 @@
-// The shadow-map viewer: one tile per cascade layer (textures from the app, depth already
-// remapped for display), and a bigger window for the layer clicked.
+// The shadow-map viewer: one tile per cascade (textures from the app, depth already remapped for
+// display) and a bigger window for the one clicked; with the atlas storage, the atlas itself.
 #include "ui/field_rules.h"
 #include "ui/layout.h"
 #include "ui/legends.h"
@@ -19,7 +19,8 @@ const ImVec2 kUvBottomRight{1.0f, 0.0f};
 
 std::string tileTooltip(const UiFrame& f, int layer) {
     std::string text = "Cascade " + std::to_string(layer);
-    if (f.in.shadowMapSize > 0) text += ", " + std::to_string(f.in.shadowMapSize) + " texels per side";
+    const auto i = static_cast<std::size_t>(layer);
+    if (i < f.in.shadowMapSizes.size()) text += ", " + std::to_string(f.in.shadowMapSizes[i]) + " texels per side";
     const FrameStats* stats = f.in.stats;
     if (stats && static_cast<std::size_t>(layer) < stats->cascades.size()) {
         const CascadeStats& c = stats->cascades[static_cast<std::size_t>(layer)];
@@ -63,7 +64,24 @@ TileGrid fitTiles(int count, ImVec2 avail) {
     return best;
 }
 
+// The atlas as one image of its aspect, each tile outlined where it lies in the texture.
+void drawAtlas(UiFrame& f) {
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float aspect = float(f.in.shadowAtlasHeight) / float(std::max(f.in.shadowAtlasWidth, 1));
+    const float width = std::max(24.0f, std::min(avail.x, avail.y / std::max(aspect, 1e-3f)));
+    ImGui::Image(f.in.shadowAtlas, ImVec2(width, width * aspect), kUvTopLeft, kUvBottomRight);
+    recordItem(f.state.rects, "shadow.atlas");
+    if (ImGui::IsItemHovered()) {
+        std::string text = "Atlas " + std::to_string(f.in.shadowAtlasWidth) + "x" +
+                           std::to_string(f.in.shadowAtlasHeight) + " texels, one tile per cascade:";
+        for (std::size_t i = 0; i < f.in.shadowMapSizes.size(); ++i)
+            text += (i == 0 ? " " : ", ") + std::to_string(f.in.shadowMapSizes[i]);
+        ImGui::SetTooltip("%s", text.c_str());
+    }
+}
+
 void drawTiles(UiFrame& f) {
+    if (f.in.shadowAtlas) return drawAtlas(f);
     const int count = static_cast<int>(f.in.shadowLayers.size());
     if (count == 0) {
         ImGui::TextDisabled("No shadow maps yet.");

@@ -59,11 +59,12 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.stabilize = cs.stabilize;
     fp.zExtension = cs.zExtension;
     fp.zExtensionDistance = cs.zExtensionDistance;
-    fp.mapSize = cs.mapSize;
     fp.wsSceneBounds = wsSceneBounds;
+    plan.storage = planStorage(cs);
     for (int i = 0; i < cs.count; ++i) {
         const auto k = static_cast<std::size_t>(i);
         fp.lsSamples = samples && k < samples->lsCascade.size() ? samples->lsCascade[k] : std::nullopt;
+        fp.mapSize = plan.storage.tiles[k].size;  // texel size and snapping per map
         plan.cascades.push_back(fitCascade(plan.camera, plan.splits, i, plan.wsLightDir, fp));
     }
     return plan;

@@ -4,6 +4,7 @@
 #include "renderer/csm/depth_bounds.h"
 #include "renderer/csm/frustum.h"
 #include "renderer/csm/light_fit.h"
+#include "renderer/csm/storage_layout.h"
 #include "renderer/settings/settings.h"
 
 #include <vector>
@@ -19,6 +20,7 @@ struct CascadePlan {
     SplitRange splitRange;                    // what the scheme divided: [near, end] or the fitted range
     bool depthFitted = false;                 // splits placed inside the seen range (depthBounds fit)
     std::vector<CascadeFit> cascades;
+    StorageLayout storage;                    // where each cascade's map lives (cascades.storage)
 };
 
 CameraParams cameraFromSettings(const CameraSettings& c, float aspect);

@@ -179,6 +179,7 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     out.lsProj = glm::ortho(ls.min.x, ls.max.x, ls.min.y, ls.max.y, -ls.max.z, -ls.min.z);
     out.viewProj = out.lsProj * out.lsView;
     out.texelWorldSize = (ls.max.x - ls.min.x) / static_cast<float>(p.mapSize);
+    out.mapSize = p.mapSize;
     return out;
 }
 

@@ -26,7 +26,7 @@ struct FitParams {
     bool stabilize = false;           // snap the box's x,y origin to whole texels
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
-    int mapSize = 1024;               // texels per side
+    int mapSize = 1024;               // texels per side of this cascade's map
     Aabb wsSceneBounds;               // all casters; used by SceneBounds
     // FitMode::Samples: the light-space bounds of the visible samples the cascade holds
     // (depth_bounds.h); nullopt (no sample, or not reduced) falls back to the slice's box.
@@ -41,6 +41,7 @@ struct CascadeFit {
     Aabb lsBox;                 // box in light view space; +Z toward the sun (max.z is the near side)
     Aabb lsSlice;               // lsBox before the z extension: the receivers' own range
     float texelWorldSize = 0.0f;// metres per texel along x (== y for sphere fit)
+    int mapSize = 0;            // texels per side of this cascade's map (FitParams::mapSize)
     float vsNear = 0.0f;        // view depth range the cascade covers (scene fit: from camera near)
     float vsFar = 0.0f;
     bool fittedToSamples = false;  // FitMode::Samples with samples: the box is theirs, not the slice's

@@ -15,14 +15,21 @@ int selectCascadeInterval(std::span<const float> splits, float vsDepth) {
     return -1;
 }
 
-float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize) {
-    const float radius = filter == FilterKind::PcfNxN ? float(filterSize / 2) + 1.0f : 1.0f;
-    return radius / float(mapSize);
+float mapEdgeMarginTexels(FilterKind filter, int filterSize) {
+    return filter == FilterKind::PcfNxN ? float(filterSize / 2) + 1.0f : 1.0f;
 }
 
-int selectCascadeMap(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, float margin, glm::vec3 wsNormal,
-                     float normalOffsetTexels) {
+float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize) {
+    return mapEdgeMarginTexels(filter, filterSize) / float(mapSize);
+}
+
+namespace {
+// The first cascade i with its coordinates inside [margin(i), 1 - margin(i)] in x, y and [0, 1] in z.
+template <class Margin>
+int firstMapHolding(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, Margin marginOf, glm::vec3 wsNormal,
+                    float normalOffsetTexels) {
     for (std::size_t i = 0; i < cascades.size(); ++i) {
+        const float margin = marginOf(cascades[i]);
         // The shader's uShadowMatrix is this product, formed on the CPU before the multiply;
         // orthographic, so w stays 1 and there is no divide (seed 000).
         const glm::mat4 tsFromWs = clipToTexture() * cascades[i].viewProj;
@@ -32,6 +39,20 @@ int selectCascadeMap(std::span<const CascadeFit> cascades, glm::vec3 wsPosition,
         if (inXY && ts.z >= 0.0f && ts.z <= 1.0f) return static_cast<int>(i);
     }
     return -1;
+}
+}  // namespace
+
+int selectCascadeMap(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, float margin, glm::vec3 wsNormal,
+                     float normalOffsetTexels) {
+    return firstMapHolding(cascades, wsPosition, [margin](const CascadeFit&) { return margin; }, wsNormal,
+                           normalOffsetTexels);
+}
+
+int selectCascadeMapPerSize(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, float marginTexels,
+                            glm::vec3 wsNormal, float normalOffsetTexels) {
+    return firstMapHolding(
+        cascades, wsPosition, [marginTexels](const CascadeFit& f) { return marginTexels / float(f.mapSize); },
+        wsNormal, normalOffsetTexels);
 }
 
 }  // namespace st::csm

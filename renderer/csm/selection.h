@@ -21,6 +21,8 @@ int selectCascadeInterval(std::span<const float> splits, float vsDepth);
 // The texture-space border map-based selection leaves out so the filter's taps stay inside the
 // tile: (taps radius + 1 texel) / mapSize for NxN PCF, 1 texel otherwise (shader edgeMargin()).
 float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize);
+// The same margin in texels: taps radius + 1 for NxN PCF, 1 otherwise.
+float mapEdgeMarginTexels(FilterKind filter, int filterSize);
 
 // Map-based (seed 003/004): the first cascade whose shadow texture coordinates x,y lie inside
 // [margin, 1-margin] and z inside [0,1]; -1 if none. Like the shader, each cascade looks at the
@@ -28,5 +30,10 @@ float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize);
 // so the offset cannot be applied once by the caller.
 int selectCascadeMap(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, float margin = 0.0f,
                      glm::vec3 wsNormal = glm::vec3(0.0f), float normalOffsetTexels = 0.0f);
+
+// As the shader does it with cascades.mapSizes: each cascade's margin is marginTexels of its own
+// map (marginTexels / fit.mapSize), so a smaller map keeps a wider border of its tile.
+int selectCascadeMapPerSize(std::span<const CascadeFit> cascades, glm::vec3 wsPosition, float marginTexels,
+                            glm::vec3 wsNormal = glm::vec3(0.0f), float normalOffsetTexels = 0.0f);
 
 }  // namespace st::csm

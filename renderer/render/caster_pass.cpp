@@ -27,7 +27,7 @@ std::size_t trianglesMeetingBox(const Scene& scene, const ClusteredScene& cs, co
 
 }  // namespace
 
-void Renderer::cascadeCasters(const Settings& s, int i, CascadeStats& cs) {
+void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs) {
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     const csm::CascadeFit fit = plan_.cascades[std::size_t(i)];
     const csm::CasterVolume volume = csm::casterVolume(s, plan_.camera, plan_.splits, i, fit);
@@ -40,13 +40,12 @@ void Renderer::cascadeCasters(const Settings& s, int i, CascadeStats& cs) {
         inBox.push_back(k);
         if (csm::casterMayShadow(clusters[k].wsBounds, volume)) batches_.add(clusters, k);
     }
-    const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.layers(), shadowMaps_.size()};
+    const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.cascades(), shadowMaps_.tile(i).size};
     const CascadeDecision d = cache_.decide(i, key);
     if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));
     CascadeStats& held = held_[std::size_t(i)];
     if (d.redraw) {
-        shadowMaps_.attachLayer(i);
-        glClear(GL_DEPTH_BUFFER_BIT);
+        shadowMaps_.beginCascade(i, state);  // its layer or tile: viewport, scissor, cleared
         viewBlock_.upload({fit.viewProj});
         scene_.drawBatches(batches_, FaceCulling::Keep);
         cache_.drawn(i, key, fit);
@@ -74,11 +73,10 @@ void Renderer::cascadeCasters(const Settings& s, int i, CascadeStats& cs) {
     cs.mapReason = d.reason;
 }
 
-void Renderer::naiveCascadeCasters(const Settings& s, int i, CascadeStats& cs) {
+void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs) {
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     const csm::CascadeFit& fit = plan_.cascades[std::size_t(i)];
-    shadowMaps_.attachLayer(i);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    shadowMaps_.beginCascade(i, state);
     viewBlock_.upload({fit.viewProj});
     for (const DrawItem& item : scene_.scene().draws) {
         if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;

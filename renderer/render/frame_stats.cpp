@@ -37,6 +37,7 @@ std::string toJsonText(const FrameStats& s) {
         e["vsFar"] = c.vsFar;
         e["lightBoxSize"] = {c.lsExtent.x, c.lsExtent.y, c.lsExtent.z};
         e["texelWorldSize"] = c.texelWorldSize;
+        e["mapSize"] = c.mapSize;
         e["casterDraws"] = c.casterDraws;
         e["casterTriangles"] = c.casterTriangles;
         e["casterClusters"] = c.casterClusters;

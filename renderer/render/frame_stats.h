@@ -14,6 +14,7 @@ struct CascadeStats {
     float vsFar = 0.0f;
     glm::vec3 lsExtent{0.0f};      // light box size x, y, z (z = depth range), metres
     float texelWorldSize = 0.0f;   // metres per shadow texel
+    int mapSize = 0;               // texels per side of this cascade's map
     // What the map holds (drawn this frame, or at its last redraw when cached):
     int casterDraws = 0;           // GL draw calls (one multi-draw per material of the clusters)
     std::size_t casterTriangles = 0;

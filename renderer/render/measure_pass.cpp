@@ -43,8 +43,7 @@ void MeasurePass::draw(const Renderer& r, const glm::mat4& observerViewProj) {
     r.bindShadingInputs();
     r.sceneGpu().bindGeometry();
     for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(item, FaceCulling::PerMaterial);
-    glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
-    glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    r.shadowMaps().unbindSamplers();
 }
 
 std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture) const {
@@ -72,13 +71,9 @@ std::vector<glm::vec4> MeasurePass::runShadowOnly(const Renderer& r, const Setti
 }
 
 std::vector<std::size_t> coveredShadowTexels(const ShadowMaps& maps) {
-    const int size = maps.size();
-    std::vector<float> depth(std::size_t(size) * size);
     std::vector<std::size_t> covered;
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    for (int layer = 0; layer < maps.layers(); ++layer) {
-        glGetTextureSubImage(maps.texture(), 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                             static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+    for (int i = 0; i < maps.cascades(); ++i) {
+        const std::vector<float> depth = readCascadeDepth(maps, i);
         covered.push_back(static_cast<std::size_t>(
             std::count_if(depth.begin(), depth.end(), [](float d) { return d < 1.0f; })));
     }

@@ -36,7 +36,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds, reduce ? &samples : nullptr);
     stats.splits = plan_.splits;
     recordDepthBounds(s, reduce ? &samples : nullptr, stats);
-    shadowMaps_.ensure(s.cascades.count, s.cascades.mapSize);
+    shadowMaps_.ensure(plan_.storage);
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
     shadowPass(s, stats);
@@ -114,13 +114,10 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
     gpu::DebugGroup group("shadow pass");
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     gpu::PassState state;
-    state.framebuffer = shadowMaps_.framebuffer();
-    state.viewport = {0, 0, shadowMaps_.size(), shadowMaps_.size()};
     state.depthTest = state.depthWrite = true;
     state.cullFace = GL_NONE;  // thin and open casters must cast from both sides
     state.depthClamp = pancake;
     state.colorWrite = false;  // depth only
-    gpu::applyPassState(state);
     glUseProgram(depthProgram_.id());
     if (options_.naive) scene_.bindGeometry();
     else scene_.bindClusteredGeometry();
@@ -132,14 +129,15 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
         gpu::DebugGroup cascadeGroup(name.c_str());
         CascadeStats cs;
         timers_.begin(i);
-        if (options_.naive) naiveCascadeCasters(s, i, cs);
-        else cascadeCasters(s, i, cs);
+        if (options_.naive) naiveCascadeCasters(s, i, state, cs);
+        else cascadeCasters(s, i, state, cs);
         timers_.end(i);
         const csm::CascadeFit& fit = plan_.cascades[i];  // after: a kept map may bring its own
         cs.vsNear = fit.vsNear;
         cs.vsFar = fit.vsFar;
         cs.lsExtent = fit.lsBox.extent();
         cs.texelWorldSize = fit.texelWorldSize;
+        cs.mapSize = fit.mapSize;
         stats.cascades.push_back(cs);
     }
 }
@@ -178,8 +176,7 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     viewBlock_.bind(ST_BLOCK_VIEW);
     bindShadingInputs();
     drawVisible(viewProj);
-    glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
-    glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    shadowMaps_.unbindSamplers();
     timers_.end(s.cascades.count);
 }
 

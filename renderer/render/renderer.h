@@ -1,5 +1,5 @@
 #pragma once
-// Draws one frame of a Settings value: a depth pass per cascade into a texture array, then the
+// Draws one frame of a Settings value: a depth pass per cascade into its map (ShadowMaps), then the
 // main pass into an offscreen colour target. Knows nothing about windows: headless replay reads
 // the pixels back, the editor blits or shows the texture.
 #include "renderer/csm/cascade_plan.h"
@@ -55,7 +55,7 @@ public:
     std::vector<std::uint8_t> readRgba8() const { return target_.readRgba8(); }
     GLuint colorTexture() const { return target_.colorTexture(); }
     GLuint framebuffer() const { return target_.framebuffer(); }
-    GLuint shadowMapTexture() const { return shadowMaps_.texture(); }
+    GLuint shadowMapTexture(int cascade = 0) const { return shadowMaps_.texture(cascade); }
     GLuint depthTexture() const { return target_.depthTexture(); }  // main pass depth, D32F
     // Of the last render(); a cascade whose map an update interval kept holds the fit that map
     // was drawn with (its vsNear, vsFar are this frame's).
@@ -74,8 +74,9 @@ public:
 private:
     void shadowPass(const Settings& s, FrameStats& stats);
     // Cascade i of the clustered path (caster_pass.cpp): culls, then redraws or keeps the map.
-    void cascadeCasters(const Settings& s, int i, CascadeStats& cs);
-    void naiveCascadeCasters(const Settings& s, int i, CascadeStats& cs);
+    // `state` is the pass state ShadowMaps::beginCascade applies with cascade i's tile.
+    void cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs);
+    void naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs);
     // SDSM: the main camera's depth drawn into the target (a prepass of this frame) and reduced.
     csm::SampleBounds reduceSamples(const Settings& s, float aspect);
     void recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const;

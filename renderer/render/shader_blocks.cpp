@@ -52,7 +52,14 @@ gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& pla
     for (int i = 0; i < s.cascades.count; ++i) {
         const csm::CascadeFit& f = plan.cascades[static_cast<std::size_t>(i)];
         gpu_if::CascadeData& c = b.cascade[i];
-        c.shadowMatrix = csm::clipToTexture() * f.viewProj;
+        const csm::MapTile& tile = plan.storage.tiles[static_cast<std::size_t>(i)];
+        const csm::MapTexture& texture = plan.storage.textures[static_cast<std::size_t>(tile.texture)];
+        // Seed 003's tile matrix folded in: ws straight to the uv of the cascade's own tile.
+        c.shadowMatrix = csm::tileMatrix(tile, texture) * csm::clipToTexture() * f.viewProj;
+        c.tileBounds = csm::tileBounds(tile, texture);
+        c.uvPerTexel = glm::vec4(1.0f / float(texture.width), 1.0f / float(texture.height), 0.0f, 0.0f);
+        c.padding = float(plan.storage.padding);
+        c.layer = tile.layer;
         c.tint = glm::vec4(cascadeTint(i), 1.0f);
         c.vsNear = plan.splits[static_cast<std::size_t>(i)];
         c.vsFar = plan.splits[static_cast<std::size_t>(i) + 1];

@@ -2,6 +2,8 @@
 
 #include "shaders/interface.h"
 
+#include <string>
+
 namespace st {
 namespace {
 gpu::Sampler compareSampler(GLenum filter) {
@@ -17,30 +19,84 @@ gpu::Sampler compareSampler(GLenum filter) {
     glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     return s;
 }
+
+const char* labelOf(CascadeStorage storage) {
+    switch (storage) {
+        case CascadeStorage::Array: return "cascade depth array";
+        case CascadeStorage::Atlas: return "cascade depth atlas";
+        case CascadeStorage::Textures: return "cascade depth texture";
+    }
+    return "cascade depth";
+}
 }  // namespace
 
-void ShadowMaps::ensure(int layers, int size) {
-    if (depth_ && layers == layers_ && size == size_) return;
-    depth_ = gpu::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
-    glObjectLabel(GL_TEXTURE, depth_.id(), -1, "cascade depth array");
+void ShadowMaps::ensure(const csm::StorageLayout& layout) {
+    const bool same = layout.storage == layout_.storage && layout.textures == layout_.textures &&
+                      layout.tiles == layout_.tiles && !textures_.empty();
+    if (same) return;
+    textures_.clear();
+    for (const csm::MapTexture& t : layout.textures) {
+        gpu::Texture tex = gpu::createTexture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(tex.id(), 1, GL_DEPTH_COMPONENT32F, t.width, t.height, t.layers);
+        glObjectLabel(GL_TEXTURE, tex.id(), -1, labelOf(layout.storage));
+        // Lit everywhere until drawn: the atlas's padding is never drawn into.
+        const float far = 1.0f;
+        glClearTexImage(tex.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+        textures_.push_back(std::move(tex));
+    }
     if (!fbo_) fbo_ = gpu::createFramebuffer();
     if (!nearest_) nearest_ = compareSampler(GL_NEAREST);
     if (!linear_) linear_ = compareSampler(GL_LINEAR);
-    layers_ = layers;
-    size_ = size;
+    layout_ = layout;
 }
 
-void ShadowMaps::attachLayer(int layer) const {
-    glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
+GLuint ShadowMaps::texture(int cascade) const { return textureAt(tile(cascade).texture); }
+
+glm::ivec4 ShadowMaps::viewport(int cascade) const {
+    const csm::MapTile& t = tile(cascade);
+    return {t.x, t.y, t.size, t.size};
+}
+
+void ShadowMaps::beginCascade(int cascade, gpu::PassState state) const {
+    const csm::MapTile& t = tile(cascade);
+    glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, texture(cascade), 0, t.layer);
     glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+    state.framebuffer = fbo_.id();
+    state.viewport = viewport(cascade);
+    // The scissor keeps the clear (and any draw) inside the tile.
+    state.scissor = true;
+    state.scissorBox = state.viewport;
+    gpu::applyPassState(state);
+    glClear(GL_DEPTH_BUFFER_BIT);
 }
 
 void ShadowMaps::bindForSampling() const {
-    glBindTextureUnit(ST_BINDING_SHADOW_NEAREST, depth_.id());
-    glBindTextureUnit(ST_BINDING_SHADOW_LINEAR, depth_.id());
+    if (layout_.storage == CascadeStorage::Textures) {
+        for (int i = 0; i < textureCount(); ++i) {
+            glBindTextureUnit(ST_BINDING_CASCADE_MAPS + i, textureAt(i));
+            glBindSampler(ST_BINDING_CASCADE_MAPS + i, linear_.id());
+        }
+        return;
+    }
+    glBindTextureUnit(ST_BINDING_SHADOW_NEAREST, textureAt(0));
+    glBindTextureUnit(ST_BINDING_SHADOW_LINEAR, textureAt(0));
     glBindSampler(ST_BINDING_SHADOW_NEAREST, nearest_.id());
     glBindSampler(ST_BINDING_SHADOW_LINEAR, linear_.id());
+}
+
+void ShadowMaps::unbindSamplers() const {
+    glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
+    glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    for (int i = 0; i < ST_MAX_CASCADES; ++i) glBindSampler(ST_BINDING_CASCADE_MAPS + i, 0);
+}
+
+std::vector<float> readCascadeDepth(const ShadowMaps& maps, int cascade) {
+    const csm::MapTile& t = maps.tile(cascade);
+    std::vector<float> depth(std::size_t(t.size) * std::size_t(t.size));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(maps.texture(cascade), 0, t.x, t.y, t.layer, t.size, t.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+    return depth;
 }
 
 }  // namespace st

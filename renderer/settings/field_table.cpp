@@ -109,7 +109,19 @@ std::vector<FieldInfo> cascadeSplitRows() {
         {.path = "cascades.mapSize", .label = "Map size",
          .help = "Texels per side of each cascade's map; doubling halves the texel footprint at 4x the memory.",
          .unit = "texels", .kind = K::Int, .min = 256, .max = 8192, .step = 1, .powerOfTwo = true,
-         .change = C::Reallocate, .shader = "mapSize", ST_FIELD_ACCESS(cascades.mapSize)},
+         .change = C::Reallocate, ST_FIELD_ACCESS(cascades.mapSize)},
+        {.path = "cascades.storage", .label = "Storage",
+         .help = "Where the maps live: layers of one array, tiles of one atlas (seed 003), or a texture per cascade (seed 002).",
+         .kind = K::Enum, .enumNames = enumNames<CascadeStorage>(), .change = C::Reallocate, .shader = "storage",
+         ST_FIELD_ACCESS(cascades.storage)},
+        {.path = "cascades.mapSizes", .label = "Map sizes",
+         .help = "Texels per side of each cascade (atlas, textures storage), so far cascades spend less; empty = map size for all.",
+         .unit = "texels", .kind = K::IntList, .min = 256, .max = 8192, .step = 1, .powerOfTwo = true,
+         .change = C::Reallocate, ST_FIELD_ACCESS(cascades.mapSizes)},
+        {.path = "cascades.atlasPadding", .label = "Atlas padding",
+         .help = "Lit texels between atlas tiles, so taps past a tile's edge read lit, not its edge texels (0: none, as seed 003).",
+         .unit = "texels", .kind = K::Int, .min = 0, .max = 64, .step = 1, .change = C::Reallocate,
+         ST_FIELD_ACCESS(cascades.atlasPadding)},
     };
 }
 
@@ -268,6 +280,7 @@ std::string_view fieldKindName(FieldKind kind) {
         case FieldKind::String: return "string";
         case FieldKind::Vec3: return "vec3";
         case FieldKind::FloatList: return "float list";
+        case FieldKind::IntList: return "int list";
         case FieldKind::KeyframeList: return "keyframe list";
     }
     return "<invalid>";

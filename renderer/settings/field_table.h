@@ -15,7 +15,7 @@
 
 namespace st {
 
-enum class FieldKind { Float, Int, Bool, Enum, String, Vec3, FloatList, KeyframeList };
+enum class FieldKind { Float, Int, Bool, Enum, String, Vec3, FloatList, KeyframeList, IntList };
 
 // What the renderer must redo when a field changes, cheapest first. Each class includes the work
 // of the ones before it, so the cost of several changes is the maximum of their classes.
@@ -29,9 +29,10 @@ enum class ChangeClass {
 
 // A field's value, by kind: Float -> float, Int -> int, Bool -> bool, Enum -> int (index into
 // FieldInfo::enumNames), String -> std::string, Vec3 -> glm::vec3, FloatList -> vector<float>,
-// KeyframeList -> vector<CameraKeyframe> (each element follows camera.position/target/fovY's rules).
+// KeyframeList -> vector<CameraKeyframe> (each element follows camera.position/target/fovY's rules),
+// IntList -> vector<int> (each element follows the Int rules: range, powerOfTwo, odd).
 using FieldValue = std::variant<float, int, bool, std::string, glm::vec3, std::vector<float>,
-                                std::vector<CameraKeyframe>>;
+                                std::vector<CameraKeyframe>, std::vector<int>>;
 
 struct FieldInfo {
     std::string_view path;   // JSON path, dot separated: "cascades.count"
@@ -39,7 +40,7 @@ struct FieldInfo {
     std::string_view help;   // one sentence: why you would change it
     std::string_view unit;   // "m", "deg", "texels", ... or "" for none
     FieldKind kind = FieldKind::Float;
-    // Inclusive range of Float/Int fields and of each element of Vec3/FloatList fields.
+    // Inclusive range of Float/Int fields and of each element of Vec3/FloatList/IntList fields.
     double min = 0.0;
     double max = 0.0;
     double step = 0.0;  // UI drag/slider step

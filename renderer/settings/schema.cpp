@@ -79,6 +79,7 @@ OJson typeSchema(const FieldInfo& field) {
         case FieldKind::Vec3:
             return OJson{{"type", "array"}, {"items", numberSchema(field)}, {"minItems", 3}, {"maxItems", 3}};
         case FieldKind::FloatList: return OJson{{"type", "array"}, {"items", numberSchema(field)}};
+        case FieldKind::IntList: return OJson{{"type", "array"}, {"items", intSchema(field)}};
         case FieldKind::KeyframeList: return keyframeListSchema();
     }
     return OJson::object();

@@ -77,6 +77,15 @@ struct EnumNames<FilterKind> {
     static constexpr std::array<std::string_view, ST_FILTER_COUNT> names{"hard", "pcf2x2", "pcf-nxn"};
 };
 
+// Where the cascades' depth maps live (renderer/csm/storage_layout.h). Array: one layer per
+// cascade of a D32F array, one size for all. Atlas: one texture, a viewport per tile (seed 003).
+// Textures: one texture per cascade (seed 002). Atlas and textures allow a size per cascade.
+enum class CascadeStorage { Array = ST_STORAGE_ARRAY, Atlas = ST_STORAGE_ATLAS, Textures = ST_STORAGE_TEXTURES };
+template <>
+struct EnumNames<CascadeStorage> {
+    static constexpr std::array<std::string_view, ST_STORAGE_COUNT> names{"array", "atlas", "textures"};
+};
+
 // TexelDensity: screen pixels per shadow texel as a heat map (blue < 1/4 wasted, green 1 ideal,
 // red > 1 perspective aliasing; docs/architecture.md#texel-density).
 // Side: the frame from an outside orbit camera with the main frustum, its split planes and each
@@ -101,6 +110,7 @@ static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBou
 static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::None) == 0);
 static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
 static_assert(int(FilterKind::PcfNxN) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
+static_assert(int(CascadeStorage::Textures) == ST_STORAGE_COUNT - 1 && int(CascadeStorage::Array) == 0);
 static_assert(int(View::Side) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
 
 // The code the shaders read for an enumerator (shaders/codes.h): its value, never remapped.
@@ -135,6 +145,9 @@ struct CascadeSettings {
     float shadowDistance = 0.0f;           // metres; 0 = camera far plane
     DepthBounds depthBounds = DepthBounds::Off;
     int mapSize = 1024;                    // texels per side, power of two 256..8192
+    CascadeStorage storage = CascadeStorage::Array;
+    std::vector<int> mapSizes;             // per cascade (atlas, textures); empty = mapSize for all
+    int atlasPadding = 8;                  // texels of lit border between atlas tiles
     FitMode fit = FitMode::Cascade;
     bool stabilize = false;                // snap the light box to whole texels (seed 001)
     ZExtension zExtension = ZExtension::SceneBounds;

@@ -143,6 +143,20 @@ std::optional<int> readInt(const FieldInfo& field, const Json& value, const std:
     return static_cast<int>(value.get<std::int64_t>());
 }
 
+std::optional<std::vector<int>> readInts(const FieldInfo& field, const Json& value, const std::string& path,
+                                         Issues& issues) {
+    if (!value.is_array()) {
+        issues.push_back({path, "expected an array of integers, got " + describe(value)});
+        return std::nullopt;
+    }
+    std::vector<int> ints;
+    const std::size_t before = issues.size();
+    for (std::size_t i = 0; i < value.size(); ++i)
+        ints.push_back(readInt(field, value[i], path + "[" + std::to_string(i) + "]", issues).value_or(0));
+    if (issues.size() != before) return std::nullopt;
+    return ints;
+}
+
 std::optional<int> readEnum(const FieldInfo& field, const Json& value, const std::string& path, Issues& issues) {
     const auto index = value.is_string() ? enumIndex(field.enumNames, value.get<std::string>()) : std::nullopt;
     if (!index) issues.push_back({path, "must be one of " + quotedNames(field.enumNames) + ", got " + describe(value)});
@@ -259,6 +273,7 @@ std::optional<FieldValue> readValueAt(const FieldInfo& field, const Json& value,
         case FieldKind::Bool: return readBool(value, path, issues);
         case FieldKind::String: return readString(value, path, issues);
         case FieldKind::FloatList: return wrap(readFloats(field, value, path, issues));
+        case FieldKind::IntList: return wrap(readInts(field, value, path, issues));
         case FieldKind::Vec3: return wrap(readVec3(field, value, path, issues));
         case FieldKind::KeyframeList: return wrap(readKeyframes(field, value, issues));
     }

@@ -65,6 +65,7 @@ nlohmann::ordered_json fieldValueToJson(const FieldInfo& field, const FieldValue
             const auto& list = std::get<std::vector<float>>(value);
             return floatArray(list.data(), list.size());
         }
+        case FieldKind::IntList: return std::get<std::vector<int>>(value);
         case FieldKind::KeyframeList: return keyframesToJson(std::get<std::vector<CameraKeyframe>>(value));
     }
     return nullptr;

@@ -86,6 +86,12 @@ void checkFieldAt(const FieldInfo& field, const FieldValue& value, const std::st
             checkElements(field, list.data(), list.size(), path, out);
             break;
         }
+        case FieldKind::IntList: {
+            const auto& list = std::get<std::vector<int>>(value);
+            for (std::size_t i = 0; i < list.size(); ++i)
+                if (auto why = checkNumber(field, list[i])) out.push_back({path + "[" + std::to_string(i) + "]", *why});
+            break;
+        }
         case FieldKind::KeyframeList: checkKeyframes(std::get<std::vector<CameraKeyframe>>(value), out); break;
     }
     if (reason) out.push_back({path, *reason});
@@ -158,6 +164,20 @@ void checkUpdateInterval(const Settings& s, std::vector<SettingsIssue>& out) {
     }
 }
 
+// A texture array has one size for every layer; an atlas tile or a texture of its own can have any.
+void checkMapSizes(const Settings& s, std::vector<SettingsIssue>& out) {
+    const CascadeSettings& c = s.cascades;
+    if (c.mapSizes.empty()) return;
+    if (c.storage == CascadeStorage::Array) {
+        out.push_back({"cascades.mapSizes", "the array storage gives every layer one size (cascades.mapSize); "
+                                            "per-cascade sizes need cascades.storage \"atlas\" or \"textures\""});
+        return;
+    }
+    if (c.mapSizes.size() != static_cast<std::size_t>(c.count))
+        out.push_back({"cascades.mapSizes", "needs one size per cascade (" + std::to_string(c.count) + "), got " +
+                                                std::to_string(c.mapSizes.size())});
+}
+
 void checkPathKeyframes(const Settings& s, std::vector<SettingsIssue>& out) {
     if (s.path.frames > 0 && s.path.keyframes.empty())
         out.push_back({"path.keyframes", "path.frames is " + std::to_string(s.path.frames) +
@@ -190,6 +210,9 @@ const std::vector<CrossRule>& crossRules() {
         {"cascades.updateInterval holds whole numbers of frames (entries past cascades.count are unused).",
          {"cascades.updateInterval"},
          checkUpdateInterval},
+        {"cascades.mapSizes, when given, holds one size per cascade and needs storage \"atlas\" or \"textures\".",
+         {"cascades.count", "cascades.storage", "cascades.mapSizes"},
+         checkMapSizes},
         {"path.frames > 0 needs at least one keyframe; each keyframe's target must differ from its position.",
          {"path.frames", "path.keyframes"},
          checkPathKeyframes},

@@ -43,8 +43,9 @@ bool nearSplit(const std::vector<float>& splits, float depth) {
 }
 
 // Any cascade's coordinate within epsilon of what selectMap compares it with.
-bool nearTileEdge(const csm::CascadePlan& plan, glm::vec3 ws, glm::vec3 n, float offsetTexels, float margin) {
+bool nearTileEdge(const csm::CascadePlan& plan, glm::vec3 ws, glm::vec3 n, float offsetTexels, float marginTexels) {
     for (const csm::CascadeFit& c : plan.cascades) {
+        const float margin = marginTexels / float(c.mapSize);  // its own map's texels
         const glm::vec3 p = ws + n * (offsetTexels * c.texelWorldSize);
         const glm::vec4 ts = csm::clipToTexture() * c.viewProj * glm::vec4(p, 1.0f);
         for (float v : {ts.x, ts.y})
@@ -62,7 +63,7 @@ protected:
         auto& e = session_.entryFor(s, ST_PRESET_DIR);
         const MeasureSamples m = metrics::sampleFrame(*e.renderer, session_.pass(), s, s);
         const csm::CascadePlan& plan = e.renderer->plan();
-        const float margin = csm::mapEdgeMargin(s.filter.kind, s.filter.size, s.cascades.mapSize);
+        const float margin = csm::mapEdgeMarginTexels(s.filter.kind, s.filter.size);
         Match r;
         for (std::size_t i = 0; i < m.size(); ++i) {
             if (!m.covered(i)) continue;
@@ -70,7 +71,7 @@ protected:
             const float depth = -(plan.vsView * glm::vec4(ws, 1.0f)).z;
             const bool interval = s.cascades.selection == Selection::Interval;
             const int cpu = interval ? csm::selectCascadeInterval(plan.splits, depth)
-                                     : csm::selectCascadeMap(plan.cascades, ws, margin, n, s.bias.normalOffset);
+                                     : csm::selectCascadeMapPerSize(plan.cascades, ws, margin, n, s.bias.normalOffset);
             const bool near = interval ? nearSplit(plan.splits, depth)
                                        : nearTileEdge(plan, ws, n, s.bias.normalOffset, margin);
             ++r.compared;
@@ -109,6 +110,21 @@ TEST_F(SelectionMatchGLTest, MapSelectionIsTheShadersWithMarginAndNormalOffset) 
     s.filter.size = 7;
     s.bias.normalOffset = 1.5f;          // ... and each cascade moves the point by its own texel
     expectMatch(s);
+}
+
+// The atlas (tile bounds in the atlas's uv, each its own margin) and one texture per cascade, with
+// a size per cascade: the GPU picks the cascade the CPU's tile-space rule picks.
+TEST_F(SelectionMatchGLTest, MapSelectionByTileBoundsWithSizesPerCascade) {
+    Settings s = test::presetAtTestSize("default");
+    s.cascades.selection = Selection::Map;
+    s.cascades.mapSizes = {1024, 512, 512, 256};
+    s.filter.kind = FilterKind::PcfNxN;
+    s.filter.size = 5;
+    for (CascadeStorage storage : {CascadeStorage::Atlas, CascadeStorage::Textures}) {
+        SCOPED_TRACE(int(storage));
+        s.cascades.storage = storage;
+        expectMatch(s);
+    }
 }
 
 // The fronto-parallel case, where the interpolated depth is exact: box-over-plane from straight

@@ -28,7 +28,7 @@ TEST_F(ShadowTilesGLTest, EveryTileSpansItsOwnDepthRange) {
     constexpr int kTile = 64;
     tiles.update(renderer.shadowMaps(), kTile);
     ASSERT_EQ(tiles.layers(), s.cascades.count);
-    const int size = renderer.shadowMaps().size();
+    const int size = renderer.shadowMaps().tile(0).size;  // the array storage: one size
     std::vector<float> depth(std::size_t(size) * std::size_t(size));
     std::vector<std::uint8_t> rgba(std::size_t(kTile) * kTile * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -68,6 +68,7 @@ TEST(FieldTableTest, ValueAlternativeMatchesKind) {
             case FieldKind::Vec3: return 4;
             case FieldKind::FloatList: return 5;
             case FieldKind::KeyframeList: return 6;
+            case FieldKind::IntList: return 7;
         }
         return 99;
     };
@@ -89,7 +90,8 @@ TEST(FieldTableTest, RowsAreDescribed) {
 TEST(FieldTableTest, NumericRowsHaveARangeAndAStep) {
     for (const FieldInfo& field : fieldTable()) {
         const bool numeric = field.kind == FieldKind::Float || field.kind == FieldKind::Int ||
-                             field.kind == FieldKind::Vec3 || field.kind == FieldKind::FloatList;
+                             field.kind == FieldKind::Vec3 || field.kind == FieldKind::FloatList ||
+                             field.kind == FieldKind::IntList;
         if (!numeric) continue;
         EXPECT_LT(field.min, field.max) << field.path;
         EXPECT_GT(field.step, 0.0) << field.path;

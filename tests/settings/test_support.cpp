@@ -17,7 +17,8 @@ Settings everyFieldChanged() {
                 .nearPlane = 0.25f, .farPlane = 250.0f};
     s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f, .angularDiameter = 1.5f};
     s.cascades = {.count = 3, .scheme = SplitScheme::Manual, .lambda = 0.8f, .manualSplits = {10.0f, 40.5f},
-                  .shadowDistance = 150.0f, .depthBounds = DepthBounds::Fit, .mapSize = 2048, .fit = FitMode::Sphere, .stabilize = true,
+                  .shadowDistance = 150.0f, .depthBounds = DepthBounds::Fit, .mapSize = 2048, .storage = CascadeStorage::Atlas,
+                  .mapSizes = {2048, 1024, 512}, .atlasPadding = 4, .fit = FitMode::Sphere, .stabilize = true,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
                   .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f};
     s.filter = {.kind = FilterKind::PcfNxN, .size = 5};

@@ -44,6 +44,25 @@ TEST(ValidationTest, EdgesOfRangesAreInclusive) {
     EXPECT_TRUE(hasMessage(validate(s), "camera.fovY: must be in 1..179, got 179.01"));
 }
 
+TEST(ValidationTest, MapSizesNeedAStorageThatAllowsThemAndOneSizePerCascade) {
+    Settings s;
+    s.cascades.count = 4;
+    s.cascades.mapSizes = {2048, 1024, 1024, 512};
+    EXPECT_EQ(validate(s), std::vector<std::string>{
+                               "cascades.mapSizes: the array storage gives every layer one size (cascades.mapSize); "
+                               "per-cascade sizes need cascades.storage \"atlas\" or \"textures\""});
+    for (CascadeStorage storage : {CascadeStorage::Atlas, CascadeStorage::Textures}) {
+        s.cascades.storage = storage;
+        EXPECT_TRUE(validate(s).empty()) << validate(s)[0];
+    }
+    s.cascades.count = 3;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"cascades.mapSizes: needs one size per cascade (3), got 4"});
+    s.cascades.count = 4;
+    s.cascades.mapSizes[2] = 1000;
+    EXPECT_EQ(validate(s), std::vector<std::string>{
+                               "cascades.mapSizes[2]: must be a power of two in 256..8192, got 1000"});
+}
+
 TEST(ValidationTest, InvalidEnumValue) {
     Settings s;
     s.output.view = static_cast<View>(9);
@@ -96,7 +115,7 @@ TEST(ValidationTest, UpdateIntervalsAreWholeFrames) {
 }
 
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 7u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 8u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 

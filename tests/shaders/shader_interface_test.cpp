@@ -89,12 +89,15 @@ TEST(ShaderInterfaceTest, BlocksCarryTheSettingsAndThePlan) {
     EXPECT_EQ(c.filterSize, 5);
     EXPECT_EQ(c.receiverPlane, 1);
     EXPECT_FLOAT_EQ(c.biasSlope, 2.5f);
-    EXPECT_EQ(c.mapSize, s.cascades.mapSize);
+    EXPECT_EQ(c.storage, ST_STORAGE_ARRAY);
     EXPECT_EQ(c.selection, ST_SELECT_INTERVAL);
     for (int i = 0; i < 2; ++i) {
         EXPECT_EQ(c.cascade[i].vsNear, plan.splits[std::size_t(i)]);
         EXPECT_EQ(c.cascade[i].vsFar, plan.splits[std::size_t(i) + 1]);
         EXPECT_EQ(c.cascade[i].texelWorld, plan.cascades[std::size_t(i)].texelWorldSize);
+        EXPECT_EQ(c.cascade[i].layer, i);  // array: layer i, the whole layer, 1/mapSize per texel
+        EXPECT_EQ(c.cascade[i].tileBounds, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
+        EXPECT_FLOAT_EQ(c.cascade[i].uvPerTexel.x, 1.0f / float(s.cascades.mapSize));
     }
     const gpu_if::FrameBlock f = frameBlock(s, plan);
     EXPECT_FLOAT_EQ(f.ambient, 0.2f);

@@ -39,7 +39,7 @@ protected:
     void giveInputs(GlUiDriver& d) {
         d.in.stats = &stats;
         for (int layer = 0; layer < 4; ++layer) d.in.shadowLayers.push_back(d.makeTestTexture(128, layer));
-        d.in.shadowMapSize = 1024;
+        d.in.shadowMapSizes = {1024, 1024, 1024, 1024};
         d.in.sideView = d.makeTestTexture(64, 5);
         for (const auto& entry : fs::directory_iterator(ST_PRESET_DIR)) {
             const auto& path = entry.path();

@@ -271,7 +271,7 @@ TEST_F(EditorUiTest, CrossFieldProblemsAreReportedNotThrown) {
 
 TEST_F(EditorUiTest, ClickingAShadowTileOpensTheZoomWindow) {
     d.in.shadowLayers = {fakeTexture(11), fakeTexture(12), fakeTexture(13), fakeTexture(14)};
-    d.in.shadowMapSize = 1024;
+    d.in.shadowMapSizes = {1024, 1024, 1024, 1024};
     d.frame();
     EXPECT_TRUE(d.drawn("shadow.tile3"));
     EXPECT_FALSE(d.drawn("shadow.zoom"));
