@@ -169,14 +169,13 @@ bool editVec3(const FieldInfo& field, Settings& s, FieldEdits& edits) {
     return storeField(field, s, v);
 }
 
-bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits& edits) {
-    const FieldValue current = field.get(s);
-    const auto* stored = std::get_if<std::vector<float>>(&current);
-    if (!stored) return showUnsupported(field);
-    std::vector<float> values = *stored;
-    bool changed = editFloatElements(field, values, rects, edits);
+// The list editors' "Add" (a copy of the last element, or `first` into an empty list) and
+// "Remove last" buttons; true if either changed `values`.
+template <class T>
+bool addOrRemoveLast(std::vector<T>& values, T first) {
+    bool changed = false;
     if (ImGui::SmallButton("Add")) {
-        values.push_back(values.empty() ? static_cast<float>(field.min) : values.back());
+        values.push_back(values.empty() ? first : values.back());
         changed = true;
     }
     ImGui::SameLine();
@@ -184,6 +183,16 @@ bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects, FieldE
         values.pop_back();
         changed = true;
     }
+    return changed;
+}
+
+bool editFloatList(const FieldInfo& field, Settings& s, ItemRects& rects, FieldEdits& edits) {
+    const FieldValue current = field.get(s);
+    const auto* stored = std::get_if<std::vector<float>>(&current);
+    if (!stored) return showUnsupported(field);
+    std::vector<float> values = *stored;
+    bool changed = editFloatElements(field, values, rects, edits);
+    changed = addOrRemoveLast(values, static_cast<float>(field.min)) || changed;
     return changed && storeField(field, s, values);
 }
 
@@ -212,15 +221,7 @@ bool editIntList(const FieldInfo& field, Settings& s) {
         }
         ImGui::PopID();
     }
-    if (ImGui::SmallButton("Add")) {
-        values.push_back(values.empty() ? static_cast<int>(field.max > 1024 ? 1024 : field.min) : values.back());
-        changed = true;
-    }
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Remove last") && !values.empty()) {
-        values.pop_back();
-        changed = true;
-    }
+    changed = addOrRemoveLast(values, static_cast<int>(field.max > 1024 ? 1024 : field.min)) || changed;
     return changed && storeField(field, s, values);
 }
 

@@ -77,6 +77,19 @@ GLuint compileStage(GLenum stage, const std::string& src, const std::string& nam
     }
     return sh;
 }
+
+// Throws with the driver's log if `prog` failed to link; labels it for debug output.
+Program linked(Program prog, const std::string& name) {
+    GLint ok = 0;
+    glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = {};
+        glGetProgramInfoLog(prog.id(), sizeof log, nullptr, log);
+        throw std::runtime_error("program " + name + " failed to link:\n" + log);
+    }
+    glObjectLabel(GL_PROGRAM, prog.id(), -1, name.c_str());
+    return prog;
+}
 }  // namespace
 
 Program linkProgram(const std::string& vertexSrc, const std::string& fragmentSrc,
@@ -95,15 +108,7 @@ Program linkProgram(const std::string& vertexSrc, const std::string& fragmentSrc
     glLinkProgram(prog.id());
     glDeleteShader(vs);
     glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[4096] = {};
-        glGetProgramInfoLog(prog.id(), sizeof log, nullptr, log);
-        throw std::runtime_error("program " + name + " failed to link:\n" + log);
-    }
-    glObjectLabel(GL_PROGRAM, prog.id(), -1, name.c_str());
-    return prog;
+    return linked(std::move(prog), name);
 }
 
 Program linkComputeProgram(const std::string& computeSrc, const std::string& name) {
@@ -112,15 +117,7 @@ Program linkComputeProgram(const std::string& computeSrc, const std::string& nam
     glAttachShader(prog.id(), cs);
     glLinkProgram(prog.id());
     glDeleteShader(cs);
-    GLint ok = 0;
-    glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[4096] = {};
-        glGetProgramInfoLog(prog.id(), sizeof log, nullptr, log);
-        throw std::runtime_error("program " + name + " failed to link:\n" + log);
-    }
-    glObjectLabel(GL_PROGRAM, prog.id(), -1, name.c_str());
-    return prog;
+    return linked(std::move(prog), name);
 }
 
 DebugGroup::DebugGroup(const char* name) {
