@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 
 using namespace st;
 
@@ -26,7 +27,7 @@ struct Planned {
 Planned plannedFrame(const std::string& preset, int width = 1280, int height = 720) {
     const std::filesystem::path file = std::filesystem::path(ST_PRESET_DIR) / preset;
     Planned p{loadPreset(file), {}};
-    const Scene scene = loadScene(p.s.scene, file.parent_path(), {.ground = p.s.ground});
+    const Scene scene = loadScene(p.s.scene, file.parent_path(), {.ground = p.s.ground});  // SceneError if missing
     const csm::CascadePlan plan = csm::planCascades(p.s, float(width) / float(height), scene.wsBounds);
     p.stats.splits = plan.splits;
     for (const csm::CascadeFit& fit : plan.cascades) {
@@ -47,8 +48,21 @@ bool fires(const std::vector<ui::Advice>& advice, const std::string& rule) {
 
 }  // namespace
 
+namespace {
+// truck_town lives in ../shared/assets beside the clone; where it is not, these two skip.
+std::optional<Planned> truckTown() {
+    try {
+        return plannedFrame("scenes/truck-town.json");
+    } catch (const SceneError&) {
+        return std::nullopt;
+    }
+}
+}  // namespace
+
 TEST(AdviceTest, TruckTownsFarCascadeIsCoarseAndTheAdviceNamesTheKnobs) {
-    const Planned p = plannedFrame("scenes/truck-town.json");
+    const std::optional<Planned> town = truckTown();
+    if (!town) GTEST_SKIP() << "no truck_town in ../shared/assets";
+    const Planned& p = *town;
     ASSERT_EQ(p.stats.cascades.size(), 4u);
     const float texel = p.stats.cascades[3].texelWorldSize;
     ASSERT_GT(texel, ui::kCoarseTexelMetres) << "the issue's 1.7 m texels";
@@ -62,7 +76,9 @@ TEST(AdviceTest, TruckTownsFarCascadeIsCoarseAndTheAdviceNamesTheKnobs) {
 }
 
 TEST(AdviceTest, SuggestionsFollowTheSettings) {
-    Planned p = plannedFrame("scenes/truck-town.json");
+    std::optional<Planned> town = truckTown();
+    if (!town) GTEST_SKIP() << "no truck_town in ../shared/assets";
+    Planned& p = *town;
     p.s.cascades.shadowDistance = 200.0f;   // already set and short
     p.s.cascades.lambda = 1.0f;             // already fully logarithmic
     const std::string text = ui::adviseFromFigures(p.s, p.stats).front().text;
