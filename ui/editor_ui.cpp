@@ -4,6 +4,7 @@
 #include "ui/field_rules.h"
 #include "ui/field_widgets.h"
 #include "ui/figures_panel.h"
+#include "ui/map_cost_confirm.h"
 #include "ui/panels.h"
 #include "ui/ui_state.h"
 
@@ -54,6 +55,7 @@ void drawPanels(UiFrame& f) {
     drawCompare(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
+    drawConfirmMapCost(f);
 }
 
 void finishFrame(UiFrame& f, const Settings& atStart) {
@@ -127,6 +129,8 @@ const std::filesystem::path& EditorUi::presetFile() const { return state_->doc.f
 const std::vector<std::string>& EditorUi::errors() const { return state_->doc.errors; }
 
 const ItemRects& EditorUi::itemRects() const { return state_->rects; }
+
+std::size_t EditorUi::undoSteps() const { return state_->undo.undoCount(); }
 
 const LayoutPrefs& EditorUi::layoutPrefs() const { return state_->prefs; }
 

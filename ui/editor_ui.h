@@ -146,6 +146,7 @@ public:
     const std::filesystem::path& presetFile() const;   // empty: untitled
     const std::vector<std::string>& errors() const;    // of the last failed load/save (shown in the UI)
     const ItemRects& itemRects() const;                // named widgets of the last draw() (tests)
+    std::size_t undoSteps() const;                     // steps Ctrl+Z can undo
     const LayoutPrefs& layoutPrefs() const;            // column widths, hidden panels (the app saves them)
     void setLayoutPrefs(const LayoutPrefs& prefs);
 

@@ -96,7 +96,7 @@ bool drawMapSize(const FieldInfo& field, UiFrame& f) {
     const int count = f.s.cascades.count;
     const bool changed = editPowerOfTwo(field, f.s, [count](int size) {
         return "(" + formatBytes(csm::shadowMapBytes(count, size)) + ")";
-    });
+    }, &f.state.rects);
     recordItem(f.state.rects, std::string(field.path));
     drawHelpMarker(field);
     const int size = f.s.cascades.mapSize;

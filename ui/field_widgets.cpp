@@ -289,7 +289,8 @@ void drawHelpMarker(const FieldInfo& field) {
     ImGui::EndTooltip();
 }
 
-bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std::string(int)>& note) {
+bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std::string(int)>& note,
+                    ItemRects* rects) {
     const FieldValue current = field.get(s);
     const int* stored = std::get_if<int>(&current);
     if (!stored) return showUnsupported(field);
@@ -301,6 +302,7 @@ bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std
     if (ImGui::BeginCombo(labelOf(field).c_str(), text(*stored).c_str())) {
         for (const int size : powerOfTwoChoices(field)) {
             if (ImGui::Selectable(text(size).c_str(), size == *stored)) chosen = size;
+            if (rects) recordItem(*rects, std::string(field.path) + ":" + std::to_string(size));
         }
         ImGui::EndCombo();
     }

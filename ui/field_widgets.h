@@ -32,8 +32,10 @@ void drawHelpMarker(const FieldInfo& field);
 bool storeField(const FieldInfo& field, Settings& s, const FieldValue& value);
 
 // A power-of-two Int field as a combo of its allowed values; `note(value)` (optional) is shown
-// beside each choice, e.g. the memory a map size costs.
-bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std::string(int)>& note);
+// beside each choice, e.g. the memory a map size costs. With `rects`, each open choice's
+// rectangle is recorded as "<path>:<value>" (so tests can pick one).
+bool editPowerOfTwo(const FieldInfo& field, Settings& s, const std::function<std::string(int)>& note,
+                    ItemRects* rects = nullptr);
 
 // A float list drawn as one drag box per element, labelled "<label> [i]" like the JSON path
 // that validation messages name; rectangles are recorded as "<path>[i]". True when an element

@@ -7,11 +7,13 @@
 #include "ui/field_widgets.h"
 #include "ui/figures_panel.h"
 #include "ui/layout.h"
+#include "ui/map_cost_confirm.h"
 #include "ui/panels.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <cctype>
 
 namespace st::ui {
@@ -60,7 +62,9 @@ void drawFieldIssues(const UiFrame& f, const FieldInfo& field) {
 void drawField(UiFrame& f, const FieldInfo& field) {
     ImGui::PushID(field.path.data(), field.path.data() + field.path.size());
     const FieldOverride custom = overrideFor(field.path);
-    const bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
+    const std::optional<Settings> before = affectsMapCost(field.path) ? std::optional<Settings>(f.s) : std::nullopt;
+    bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
+    if (changed && before && holdExpensiveEdit(f, field, *before)) changed = false;
     f.edited = f.edited || changed;
     drawFieldIssues(f, field);
     ImGui::PopID();

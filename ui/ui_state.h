@@ -9,6 +9,7 @@
 #include "ui/field_widgets.h"
 #include "ui/history.h"
 #include "ui/layout.h"
+#include "ui/map_cost.h"
 #include "ui/undo_stack.h"
 
 #include <filesystem>
@@ -60,6 +61,7 @@ struct UiState {
     PendingDiscard pending;
     bool openConfirm = false;              // open the confirmation modal this frame
     bool quitConfirmed = false;            // draw() returns quit
+    MapCostAsk mapAsk;                     // an expensive map-size change held while the editor asks
 
     LayoutPrefs prefs;                     // column widths, hidden panels: kept by the app across runs
     Layout layout;                         // this frame's panel and scene rectangles (beginFrame)

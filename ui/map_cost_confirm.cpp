@@ -1,0 +1,72 @@
+// The modal asked before a map-size change that costs more than kAskAboveShadowBytes or
+// kAskAboveRedrawMs (ui/map_cost.h), the pattern of confirm_modal.cpp: the settings panel holds
+// the edit instead of applying it, this modal applies it as one undo step or drops it.
+#include "ui/document_actions.h"
+#include "ui/layout.h"
+#include "ui/map_cost_confirm.h"
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+namespace st::ui {
+namespace {
+
+constexpr const char* kTitle = "Large shadow maps";
+
+bool modalButton(UiFrame& f, const char* label, const char* key) {
+    const bool pressed = ImGui::Button(label, ImVec2(110.0f, 0.0f));
+    recordItem(f.state.rects, key);
+    return pressed;
+}
+
+// `rendered`: the settings of the last frame (f.s already holds the edit being judged).
+std::optional<double> msPerTexel(UiFrame& f, const CascadeSettings& rendered) {
+    if (f.in.stats) {
+        if (const auto measured = measuredMsPerTexel(*f.in.stats, rendered)) f.state.mapAsk.msPerTexel = measured;
+    }
+    return f.state.mapAsk.msPerTexel;
+}
+
+}  // namespace
+
+bool holdExpensiveEdit(UiFrame& f, const FieldInfo& field, const Settings& before) {
+    if (!affectsMapCost(field.path)) return false;
+    const std::optional<double> rate = msPerTexel(f, before.cascades);
+    const MapCost after = mapCost(f.s.cascades, rate);
+    if (!asksFirst(mapCost(before.cascades, rate), after)) return false;
+    f.state.mapAsk.field = &field;
+    f.state.mapAsk.value = field.get(f.s);
+    f.state.mapAsk.question = costQuestion(f.s.cascades, after);
+    f.state.mapAsk.open = true;
+    f.s = before;
+    return true;
+}
+
+void drawConfirmMapCost(UiFrame& f) {
+    MapCostAsk& ask = f.state.mapAsk;
+    if (ask.open) {
+        ImGui::OpenPopup(kTitle);
+        ask.open = false;
+    }
+    placeNextWindow(Panel::Confirm);
+    if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::TextUnformatted(ask.question.c_str());
+    recordItem(f.state.rects, "mapcost.question");
+    ImGui::Spacing();
+    if (modalButton(f, "Apply", "mapcost.apply") && ask.field) {
+        // Applied to the settings as they are now (the sun may have moved meanwhile), not a snapshot.
+        Settings after = f.s;
+        ask.field->set(after, ask.value);
+        applyEdit(f, std::move(after));
+        ask.field = nullptr;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (modalButton(f, "Cancel", "mapcost.cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+        ask.field = nullptr;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace st::ui
