@@ -28,6 +28,10 @@
 #define ST_BINDING_SHADOW_LINEAR 1   // same texture, linear compare: 2x2 PCF per tap
 #define ST_BINDING_BASE_COLOR 2
 #define ST_BINDING_DEPTH_VIEW 3      // a depth array read raw (no compare) by depth_view.frag
+#define ST_BINDING_MOMENTS 4         // the moment array (VSM, EVSM, MSM), filtered
+#define ST_BINDING_MOMENT_SOURCE 5   // the depth array read raw by moments_make.frag
+#define ST_BINDING_MOMENT_SCRATCH 6  // moments blurred along x, read by moments_blur.frag
+#define ST_BINDING_SHADOW_RAW 7      // the depth array without compare: PCSS's blocker search
 
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws
@@ -68,8 +72,21 @@
     M(float, biasSlope)    /* texels per unit tan(angle to the sun) */                            \
     M(float, normalOffset) /* texels */                                                           \
     M(int, receiverPlane)  /* bool */                                                             \
-    M(int, cascadePad0)                                                                           \
+    M(int, filterWeights)  /* ST_WEIGHTS_* */                                                 \
     M(int, cascadePad1)                                                                           \
+    M(int, blurRadius)     /* texels each side of the moment maps' separable Gaussian blur */     \
+    M(int, moments16)      /* bool: 16-bit moment storage */                                      \
+    M(float, minVariance)  /* VSM/EVSM variance floor, squared depth units */                     \
+    M(float, bleedExponent) /* moment filters: lit share raised to this power (seed 004) */       \
+    M(float, momentBias)   /* MSM: moments pulled toward 0.5 by this share */                     \
+    M(float, evsmPosExp)   /* EVSM exponents after the clamp of the storage's precision */        \
+    M(float, evsmNegExp)                                                                          \
+    M(int, blockerTaps)    /* PCSS: taps per side of the blocker search */                         \
+    M(float, pcssMaxRadius) /* PCSS: cap of the kernel radius, texels */                          \
+    M(float, sunTan)       /* tan of the sun's angular diameter (light.angularDiameter) */         \
+    M(int, cascadePad2)                                                                           \
+    M(int, cascadePad3)                                                                           \
+    A(vec4, pcfWeights, 3) /* 1-D tap weights of the NxN filter, [k/4][k%4] for tap k - size/2 */ \
     A(CascadeData, cascade, ST_MAX_CASCADES)
 
 // Per draw: the material of the draw item.

@@ -37,6 +37,8 @@ struct UiInputs {
     double cpuFrameMs = 0.0;                 // wall time of the previous frame (the CPU plot)
     std::vector<ImTextureID> shadowLayers;   // one GL texture per cascade, depth already remapped for
                                              // display; shown with texel row 0 at the bottom
+    std::vector<ImTextureID> shadowVariance; // moment filters: per cascade the moments' spread
+                                             // (black none .. yellow wide); empty otherwise
     int shadowMapSize = 0;                   // texels per side of those layers
     ImTextureID sideView = nullptr;          // picture-in-picture image (the side camera, or the main
                                              // view when swapped); nullptr hides the window

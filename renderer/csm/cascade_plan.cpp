@@ -1,5 +1,6 @@
 #include "renderer/csm/cascade_plan.h"
 
+#include "renderer/csm/selection.h"
 #include "renderer/csm/splits.h"
 
 #include <glm/trigonometric.hpp>
@@ -41,6 +42,7 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.zExtension = cs.zExtension;
     fp.zExtensionDistance = cs.zExtensionDistance;
     fp.mapSize = cs.mapSize;
+    fp.padTexels = s.filter.padding ? filterPaddingTexels(s.filter) : 0;
     fp.wsSceneBounds = wsSceneBounds;
     for (int i = 0; i < cs.count; ++i)
         plan.cascades.push_back(fitCascade(plan.camera, plan.splits, i, plan.wsLightDir, fp));

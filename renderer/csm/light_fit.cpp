@@ -31,6 +31,9 @@ void validateSplits(std::span<const float> splits, int index) {
 
 void validateFit(const FitParams& p) {
     if (p.mapSize < 2) fail("cascades.mapSize must be >= 2, got " + str(p.mapSize));
+    if (p.padTexels < 0 || 2 * p.padTexels >= p.mapSize)
+        fail("padding (" + str(p.padTexels) + " texels) must be >= 0 and under half of cascades.mapSize (" +
+             str(p.mapSize) + ")");
     const float d = p.zExtensionDistance;
     if (p.zExtension == ZExtension::Distance && !(d >= 0.0f && std::isfinite(d)))
         fail("cascades.zExtensionDistance must be >= 0, got " + str(d));
@@ -79,6 +82,19 @@ SliceBox sphereBox(const CameraParams& cam, float vsNear, float vsFar, const glm
     const glm::vec4 wsCentre = inverseViewMatrix(cam) * glm::vec4(0.0f, 0.0f, -s.vsDepth, 1.0f);
     const glm::vec3 lsCentre(lsView * wsCentre);
     return {{lsCentre - s.radius, lsCentre + s.radius}, glm::vec2(2.0f * s.radius)};
+}
+
+// Seed 004 PCF padding: the slice of width w keeps `pad` texels of the m-texel map on each side,
+// so the grown width W satisfies W (m - 2 pad) / m = w.
+SliceBox padBox(SliceBox box, int pad, int mapSize) {
+    if (pad == 0) return box;
+    for (int axis = 0; axis < 2; ++axis) {
+        const float grow = box.size[axis] * float(pad) / float(mapSize - 2 * pad);
+        box.ls.min[axis] -= grow;
+        box.ls.max[axis] += grow;
+        box.size[axis] += 2.0f * grow;
+    }
+    return box;
 }
 
 // Seed 001 texel snapping: min x,y moved down to whole texels, max = min + size, so the box only
@@ -144,6 +160,7 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     out.vsFar = splits[i + 1];
     SliceBox box = p.fit == FitMode::Sphere ? sphereBox(cam, out.vsNear, out.vsFar, out.lsView)
                                             : cornerBox(cam, out.vsNear, out.vsFar, out.lsView);
+    box = padBox(box, p.padTexels, p.mapSize);
     if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize);
     const Aabb ls = extendZ(box.ls, out.lsView, p);
     out.lsBox = ls;

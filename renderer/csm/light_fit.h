@@ -26,6 +26,7 @@ struct FitParams {
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
     int mapSize = 1024;               // texels per side
+    int padTexels = 0;                // texels added on each x,y side so kernels stay in the map
     Aabb wsSceneBounds;               // all casters; used by SceneBounds
 };
 
@@ -44,6 +45,7 @@ struct CascadeFit {
 // - Cascade/Scene: tight AABB of the slice corners in ls (seed 000 crop matrix, seed 002).
 // - Sphere: a square box around the slice's bounding sphere, radius rounded up to 1/16 m so its
 //   size does not change when the camera rotates (seed 001).
+// - padTexels: the box grown on each x,y side so the slice keeps padTexels texels to the rim.
 // - stabilize: min x,y moved down to a multiple of the texel size, max = min + size (seed 001).
 // - z: the slice's range, extended toward the sun by zExtensionDistance, or unioned with the
 //   scene bounds (seed 003, using transformAabb), or left as is for None/Pancake.

@@ -21,6 +21,11 @@ int selectCascadeInterval(std::span<const float> splits, float vsDepth);
 // The texture-space border map-based selection leaves out so the filter's taps stay inside the
 // tile: (taps radius + 1 texel) / mapSize for NxN PCF, 1 texel otherwise (shader edgeMargin()).
 float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize);
+// That border in texels: how far the filter's taps reach from the texel a point falls in.
+int filterReachTexels(FilterKind filter, int filterSize);
+// The padding filter.padding adds around each light box (seed 004, "Padding for PCF Kernels"): the
+// reach above, PCSS's capped radius + 1, or a moment filter's blur radius + 1.
+int filterPaddingTexels(const FilterSettings& filter);
 
 // Map-based (seed 003/004): the first cascade whose shadow texture coordinates x,y lie inside
 // [margin, 1-margin] and z inside [0,1]; -1 if none. Like the shader, each cascade looks at the

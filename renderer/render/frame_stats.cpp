@@ -11,7 +11,9 @@ std::string toJsonText(const FrameStats& s) {
     j["sceneTriangles"] = s.sceneTriangles;
     j["splits"] = s.splits;
     j["shadowMapBytes"] = s.shadowMapBytes;
+    j["filterMapBytes"] = s.filterMapBytes;
     j["gpuShadowMs"] = s.gpuShadowMs;
+    j["gpuFilterMs"] = s.gpuFilterMs;
     j["gpuMainMs"] = s.gpuMainMs;
     j["cpuMs"] = s.cpuMs;
     auto& arr = j["cascades"] = nlohmann::ordered_json::array();

@@ -23,7 +23,9 @@ struct FrameStats {
     std::vector<float> splits;
     std::vector<CascadeStats> cascades;
     std::size_t shadowMapBytes = 0;
+    std::size_t filterMapBytes = 0;  // the filter's own maps (moment array and scratch), 0 if none
     double gpuShadowMs = 0.0;  // all cascades
+    double gpuFilterMs = 0.0;  // the filter's extra passes (moment maps and their blur)
     double gpuMainMs = 0.0;
     double cpuMs = 0.0;        // CPU time to plan and submit the frame
     std::size_t sceneTriangles = 0;

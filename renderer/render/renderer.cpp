@@ -28,8 +28,16 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
     cascadeBlock_.upload(cascadeBlock(s, plan_));
-    timers_.beginFrame(s.cascades.count + 1);
+    timers_.beginFrame(s.cascades.count + 2);
     shadowPass(s, stats);
+    const bool moments = isMomentFilter(s.filter.kind);
+    if (moments) {
+        timers_.begin(s.cascades.count + 1);
+        cascadeBlock_.bind(ST_BLOCK_CASCADES);
+        moments_.build(shadowMaps_, s);
+        timers_.end(s.cascades.count + 1);
+        stats.filterMapBytes = moments_.bytes();
+    }
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
     else
@@ -40,6 +48,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.gpuShadowMs += stats.cascades[i].gpuMs;
     }
     stats.gpuMainMs = timers_.milliseconds(s.cascades.count);
+    if (moments) stats.gpuFilterMs = timers_.milliseconds(s.cascades.count + 1);
     return stats;
 }
 
@@ -82,6 +91,7 @@ void Renderer::bindShadingInputs() const {
     frameBlock_.bind(ST_BLOCK_FRAME);
     cascadeBlock_.bind(ST_BLOCK_CASCADES);
     shadowMaps_.bindForSampling();
+    if (moments_.layers() > 0) moments_.bindForSampling();
 }
 
 void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out) {
@@ -115,6 +125,8 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     for (const DrawItem& item : scene_.scene().draws) scene_.draw(item, FaceCulling::PerMaterial);
     glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
     glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    glBindSampler(ST_BINDING_MOMENTS, 0);
+    glBindSampler(ST_BINDING_SHADOW_RAW, 0);
     timers_.end(s.cascades.count);
 }
 

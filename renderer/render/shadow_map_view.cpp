@@ -10,6 +10,7 @@ namespace st {
 
 ShadowMapView::ShadowMapView() {
     program_ = linkShaderFiles("fullscreen.vert", "depth_view.frag", "depth_view");
+    momentProgram_ = linkShaderFiles("fullscreen.vert", "moment_view.frag", "moment_view");
     emptyVao_ = gpu::createVertexArray();
     fbo_ = gpu::createFramebuffer();
     raw_ = gpu::createSampler();
@@ -19,24 +20,30 @@ ShadowMapView::ShadowMapView() {
 }
 
 void ShadowMapView::update(const ShadowMaps& maps, const csm::CascadePlan& plan, const csm::Aabb& wsSceneBounds,
-                           int tileSize) {
+                           int tileSize, const MomentMaps* moments) {
     gpu::DebugGroup group("shadow map view");
     retired_.clear();
-    auto retire = [this] {
-        retired_.push_back(std::move(tiles_.back()));
-        tiles_.pop_back();
+    const bool showMoments = moments && moments->layers() == maps.layers() && moments->size() == maps.size();
+    auto retire = [this](std::vector<gpu::Texture>& tiles) {
+        retired_.push_back(std::move(tiles.back()));
+        tiles.pop_back();
     };
-    if (tileSize != tileSize_)
-        while (!tiles_.empty()) retire();
-    tileSize_ = tileSize;
-    while (int(tiles_.size()) > maps.layers()) retire();
-    while (int(tiles_.size()) < maps.layers()) {
-        tiles_.push_back(gpu::createTexture(GL_TEXTURE_2D));
-        glTextureStorage2D(tiles_.back().id(), 1, GL_RGBA8, tileSize, tileSize);
+    if (tileSize != tileSize_) {
+        while (!tiles_.empty()) retire(tiles_);
+        while (!varianceTiles_.empty()) retire(varianceTiles_);
     }
-    glUseProgram(program_.id());
+    tileSize_ = tileSize;
+    const int varianceLayers = showMoments ? maps.layers() : 0;
+    while (int(tiles_.size()) > maps.layers()) retire(tiles_);
+    while (int(varianceTiles_.size()) > varianceLayers) retire(varianceTiles_);
+    for (auto* tiles : {&tiles_, &varianceTiles_})
+        while (int(tiles->size()) < (tiles == &tiles_ ? maps.layers() : varianceLayers)) {
+            tiles->push_back(gpu::createTexture(GL_TEXTURE_2D));
+            glTextureStorage2D(tiles->back().id(), 1, GL_RGBA8, tileSize, tileSize);
+        }
+    glUseProgram(showMoments ? momentProgram_.id() : program_.id());
     glBindVertexArray(emptyVao_.id());
-    glBindTextureUnit(ST_BINDING_DEPTH_VIEW, maps.texture());
+    glBindTextureUnit(ST_BINDING_DEPTH_VIEW, showMoments ? moments->texture() : maps.texture());
     glBindSampler(ST_BINDING_DEPTH_VIEW, raw_.id());
     gpu::PassState state;
     state.framebuffer = fbo_.id();
@@ -51,10 +58,14 @@ void ShadowMapView::update(const ShadowMaps& maps, const csm::CascadePlan& plan,
         tile.layer = i;
         tile.depthLo = std::clamp((f.lsBox.max.z - ls.max.z) / range, 0.0f, 1.0f);
         tile.depthHi = std::clamp((f.lsBox.max.z - ls.min.z) / range, 0.0f, 1.0f);
-        overlay_.upload(tile);
         overlay_.bind(ST_BLOCK_OVERLAY);
-        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tiles_[i].id(), 0);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        for (int image = 0; image < (showMoments ? 2 : 1); ++image) {
+            tile.brightness = float(image);  // moment_view.frag: 0 the mean as depth, 1 the spread
+            overlay_.upload(tile);
+            const GLuint target = image == 0 ? tiles_[i].id() : varianceTiles_[i].id();
+            glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target, 0);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
     }
     glBindSampler(ST_BINDING_DEPTH_VIEW, 0);
 }

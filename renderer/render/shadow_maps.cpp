@@ -27,6 +27,10 @@ void ShadowMaps::ensure(int layers, int size) {
     if (!fbo_) fbo_ = gpu::createFramebuffer();
     if (!nearest_) nearest_ = compareSampler(GL_NEAREST);
     if (!linear_) linear_ = compareSampler(GL_LINEAR);
+    if (!raw_) {
+        raw_ = compareSampler(GL_NEAREST);
+        glSamplerParameteri(raw_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    }
     layers_ = layers;
     size_ = size;
 }
@@ -41,6 +45,8 @@ void ShadowMaps::bindForSampling() const {
     glBindTextureUnit(ST_BINDING_SHADOW_LINEAR, depth_.id());
     glBindSampler(ST_BINDING_SHADOW_NEAREST, nearest_.id());
     glBindSampler(ST_BINDING_SHADOW_LINEAR, linear_.id());
+    glBindTextureUnit(ST_BINDING_SHADOW_RAW, depth_.id());
+    glBindSampler(ST_BINDING_SHADOW_RAW, raw_.id());
 }
 
 }  // namespace st

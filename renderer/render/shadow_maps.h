@@ -13,7 +13,8 @@ public:
     void ensure(int layers, int size);  // (re)allocates when layers or size differ
     void attachLayer(int layer) const;  // as the depth attachment of framebuffer()
     GLuint framebuffer() const { return fbo_.id(); }
-    void bindForSampling() const;       // array on both shadow bindings, nearest + linear compare
+    // The array on both shadow bindings (nearest + linear compare) and, raw, on ST_BINDING_SHADOW_RAW.
+    void bindForSampling() const;
     GLuint texture() const { return depth_.id(); }
     int layers() const { return layers_; }
     int size() const { return size_; }
@@ -24,6 +25,7 @@ private:
     gpu::Framebuffer fbo_;
     gpu::Sampler nearest_;
     gpu::Sampler linear_;
+    gpu::Sampler raw_;
     int layers_ = 0;
     int size_ = 0;
 };

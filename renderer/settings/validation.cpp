@@ -166,6 +166,12 @@ void checkGround(const Settings& s, std::vector<SettingsIssue>& out) {
         out.push_back({"ground", "must be false for " + s.scene + ", which has its own ground"});
 }
 
+void checkReceiverPlane(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (!s.bias.receiverPlane || !isMomentFilter(s.filter.kind)) return;
+    out.push_back({"bias.receiverPlane", "must be false with filter.kind \"" + std::string(enumName(s.filter.kind)) +
+                                             "\": a moment filter compares no texel depths to put on the receiver's plane"});
+}
+
 const std::vector<CrossRule>& crossRules() {
     static const std::vector<CrossRule> rules = {
         {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
@@ -182,6 +188,10 @@ const std::vector<CrossRule>& crossRules() {
          {"path.frames", "path.keyframes"},
          checkPathKeyframes},
         {"ground is for glTF scenes; built-in scenes have their own.", {"scene", "ground"}, checkGround},
+        {"bias.receiverPlane applies to the depth-compare filters (hard, pcf2x2, pcf-nxn), not to the moment "
+         "filters (vsm, evsm2, evsm4, msm).",
+         {"filter.kind", "bias.receiverPlane"},
+         checkReceiverPlane},
     };
     return rules;
 }

@@ -15,12 +15,15 @@ Settings everyFieldChanged() {
     s.ground = true;
     s.camera = {.position = {1.5f, 2.25f, -3.0f}, .target = {0.5f, 0.0f, 1.0f}, .fovY = 45.5f,
                 .nearPlane = 0.25f, .farPlane = 250.0f};
-    s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f};
+    s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f, .angularDiameter = 1.25f};
     s.cascades = {.count = 3, .scheme = SplitScheme::Manual, .lambda = 0.8f, .manualSplits = {10.0f, 40.5f},
                   .shadowDistance = 150.0f, .mapSize = 2048, .fit = FitMode::Sphere, .stabilize = true,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
                   .blendBand = 0.1f};
-    s.filter = {.kind = FilterKind::PcfNxN, .size = 5};
+    s.filter = {.kind = FilterKind::PcfNxN, .size = 5, .weights = FilterWeights::Gaussian, .padding = true,
+                .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f,
+                .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
+                .pcssMaxRadius = 12.0f};
     s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
     s.output = {.width = 800, .height = 600, .view = View::Cascades};
     s.path = {.frames = 12,

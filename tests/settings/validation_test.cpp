@@ -1,4 +1,5 @@
 // validate() on in-memory Settings: the editor's check, same rules as the JSON reader.
+#include "renderer/settings/enum_names.h"
 #include "renderer/settings/validation.h"
 #include "tests/settings/test_support.h"
 
@@ -85,8 +86,22 @@ TEST(ValidationTest, GroundIsOnlyForGltfScenes) {
     EXPECT_TRUE(validate(s).empty());
 }
 
+TEST(ValidationTest, ReceiverPlaneBiasNeedsADepthCompareFilter) {
+    Settings s;
+    s.bias.receiverPlane = true;
+    for (FilterKind k : {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN}) {
+        s.filter.kind = k;
+        EXPECT_TRUE(validate(s).empty()) << enumName(k);
+    }
+    s.filter.kind = FilterKind::Evsm4;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"bias.receiverPlane: must be false with filter.kind \"evsm4\": a "
+                                                    "moment filter compares no texel depths to put on the receiver's plane"});
+    s.bias.receiverPlane = false;
+    EXPECT_TRUE(validate(s).empty());
+}
+
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 6u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 7u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 
