@@ -199,7 +199,10 @@ bool EditorSession::renderViews(int width, int height) {
         if (swapped_) renderer_->renderMainView(valid_, pip_);
         else renderer_->renderSideView(valid_, orbit_, pip_);
     }
-    shadowTiles_->update(renderer_->shadowMaps(), 256);
+    // A moment filter's tiles read the frame's cascade block (filter kind, exponents).
+    const bool moments = isMomentFilter(valid_.filter.kind);
+    if (moments) renderer_->bindShadingInputs();
+    shadowTiles_->update(renderer_->shadowMaps(), 256, moments ? &renderer_->momentMaps() : nullptr);
     return true;
 }
 
@@ -229,7 +232,10 @@ ui::UiInputs EditorSession::uiInputs() {
     ui::UiInputs in;
     in.stats = &stats_;
     in.cpuFrameMs = cpuFrameMs_;
-    for (int i = 0; i < shadowTiles_->layers(); ++i) in.shadowLayers.push_back(tex(shadowTiles_->layerTexture(i)));
+    for (int i = 0; i < shadowTiles_->layers(); ++i) {
+        in.shadowLayers.push_back(tex(shadowTiles_->layerTexture(i)));
+        if (GLuint v = shadowTiles_->varianceTexture(i)) in.shadowVariance.push_back(tex(v));
+    }
     for (const CascadeStats& c : stats_.cascades) in.shadowMapSizes.push_back(c.mapSize);
     if (shadowTiles_->atlasTexture()) {
         in.shadowAtlas = tex(shadowTiles_->atlasTexture());

@@ -29,7 +29,9 @@ CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vecto
     r.gpuShadowMs = medianOf(frames, [](const FrameStats& f) { return f.gpuShadowMs; });
     r.gpuMainMs = medianOf(frames, [](const FrameStats& f) { return f.gpuMainMs; });
     r.cpuMs = medianOf(frames, [](const FrameStats& f) { return f.cpuMs; });
+    r.gpuFilterMs = medianOf(frames, [](const FrameStats& f) { return f.gpuFilterMs; });
     r.shadowMapBytes = last.shadowMapBytes;
+    r.filterMapBytes = last.filterMapBytes;
     r.sceneTriangles = last.sceneTriangles;
     for (std::size_t i = 0; i < last.cascades.size(); ++i) {
         CascadeCost c;

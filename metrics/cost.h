@@ -22,8 +22,10 @@ struct CostReport {
     int frames = 0;           // timed frames (after the warm-up frame)
     double gpuShadowMs = 0.0; // medians
     double gpuMainMs = 0.0;
+    double gpuFilterMs = 0.0; // the filter's extra passes (moment maps and their blur)
     double cpuMs = 0.0;
     std::size_t shadowMapBytes = 0;
+    std::size_t filterMapBytes = 0;  // the filter's own maps
     std::size_t sceneTriangles = 0;
     std::size_t texels = 0;
     std::size_t texelsCovered = 0;

@@ -93,7 +93,8 @@ OJson costJson(const CostReport& c) {
     OJson j{{"timedFrames", c.frames},         {"gpuShadowMs", c.gpuShadowMs},   {"gpuMainMs", c.gpuMainMs},
             {"cpuMs", c.cpuMs},                {"shadowMapBytes", c.shadowMapBytes}, {"sceneTriangles", c.sceneTriangles},
             {"draws", c.draws},                {"casterTriangles", c.triangles}, {"texels", c.texels},
-            {"texelsCovered", c.texelsCovered}, {"cascades", OJson::array()}};
+            {"texelsCovered", c.texelsCovered}, {"gpuFilterMs", c.gpuFilterMs},
+            {"filterMapBytes", c.filterMapBytes}, {"cascades", OJson::array()}};
     for (const CascadeCost& k : c.cascades) {
         j["cascades"].push_back(OJson{{"draws", k.draws}, {"casterTriangles", k.triangles}, {"gpuMs", k.gpuMs},
                                       {"texels", k.texels}, {"texelsCovered", k.texelsCovered}});

@@ -42,7 +42,17 @@
 #define ST_FILTER_HARD 0
 #define ST_FILTER_PCF2X2 1
 #define ST_FILTER_PCF_NXN 2
-#define ST_FILTER_COUNT 3
+#define ST_FILTER_VSM 3    /* moment filters (renderer/render/moment_maps.h): VSM..MSM */
+#define ST_FILTER_EVSM2 4
+#define ST_FILTER_EVSM4 5
+#define ST_FILTER_MSM 6
+#define ST_FILTER_PCSS 7   /* percentage-closer soft shadows: blocker search, then PCF */
+#define ST_FILTER_COUNT 8
+
+// FilterWeights: the weights of the NxN PCF taps
+#define ST_WEIGHTS_BOX 0
+#define ST_WEIGHTS_GAUSSIAN 1
+#define ST_WEIGHTS_COUNT 2
 
 // CascadeStorage: one depth array layer per cascade; one atlas texture with a tile per cascade
 // (seed 003); one texture per cascade (seed 002)

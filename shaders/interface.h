@@ -30,6 +30,9 @@
 #define ST_BINDING_BASE_COLOR 2
 #define ST_BINDING_DEPTH_VIEW 3      // a depth array read raw (no compare) by depth_view.frag
 #define ST_BINDING_REDUCE_DEPTH 4    // the camera's depth buffer, read by depth_bounds_comp.glsl
+#define ST_BINDING_MOMENTS 5         // the moment array (VSM, EVSM, MSM), filtered
+#define ST_BINDING_MOMENT_SOURCE 6   // the depth array read raw by moments_make.frag
+#define ST_BINDING_MOMENT_SCRATCH 7  // moments blurred along x, read by moments_blur.frag
 
 // Shader storage binding points.
 #define ST_STORAGE_REDUCE 0          // depth_bounds_comp.glsl's result (renderer/render/depth_bounds_pass.cpp)
@@ -37,6 +40,9 @@
 // Storage "textures": cascade i's own depth texture (a one-layer array) on unit
 // ST_BINDING_CASCADE_MAPS + i, linear compare (shadow_sampling.glsl reads it through a switch).
 #define ST_BINDING_CASCADE_MAPS 8
+// Storage "array" and "atlas": the depth texture without compare, PCSS's blocker search (after
+// the ST_MAX_CASCADES units of ST_BINDING_CASCADE_MAPS).
+#define ST_BINDING_SHADOW_RAW 16
 
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws
@@ -84,7 +90,20 @@
     M(float, normalOffset) /* texels */                                                           \
     M(int, receiverPlane)  /* bool */                                                             \
     M(float, fadeBand)     /* fraction of the last cascade's range faded to lit at its far end */ \
-    M(int, cascadePad1)                                                                           \
+    M(int, filterWeights)  /* ST_WEIGHTS_* */                                                     \
+    M(int, blurRadius)     /* texels each side of the moment maps' separable Gaussian blur */     \
+    M(int, moments16)      /* bool: 16-bit moment storage */                                      \
+    M(float, minVariance)  /* VSM/EVSM variance floor, squared depth units */                     \
+    M(float, bleedExponent) /* moment filters: lit share raised to this power (seed 004) */       \
+    M(float, momentBias)   /* MSM: moments pulled toward 0.5 by this share */                     \
+    M(float, evsmPosExp)   /* EVSM exponents after the clamp of the storage's precision */        \
+    M(float, evsmNegExp)                                                                          \
+    M(int, blockerTaps)    /* PCSS: taps per side of the blocker search */                         \
+    M(float, pcssMaxRadius) /* PCSS: cap of the kernel radius, texels */                          \
+    M(float, sunTan)       /* tan of the sun's angular diameter (light.angularDiameter) */         \
+    M(int, cascadePad2)                                                                           \
+    M(int, cascadePad3)                                                                           \
+    A(vec4, pcfWeights, 3) /* 1-D tap weights of the NxN filter, [k/4][k%4] for tap k - size/2 */ \
     A(CascadeData, cascade, ST_MAX_CASCADES)
 
 // Per draw: the material of the draw item.

@@ -2,12 +2,18 @@
 // (shaders/interface.h). The CPU twin of the selection rules is renderer/csm/selection.cpp;
 // tests/metrics/selection_match_gl_test.cpp checks both pick the same cascade on every pixel.
 #include "interface.h"
+#include "moments.glsl"
 // Storage "array" and "atlas": one depth array (the atlas is its only layer) on two samplers.
 layout(binding = ST_BINDING_SHADOW_NEAREST) uniform sampler2DArrayShadow uShadowNearest;
 layout(binding = ST_BINDING_SHADOW_LINEAR) uniform sampler2DArrayShadow uShadowLinear;
 // Storage "textures": cascade i's own one-layer depth array on unit ST_BINDING_CASCADE_MAPS + i,
 // linear compare only (one sampler per unit; the nearest test is a linear tap at a texel centre).
 layout(binding = ST_BINDING_CASCADE_MAPS) uniform sampler2DArrayShadow uCascadeMaps[ST_MAX_CASCADES];
+// Moment filters (array storage only, renderer/settings/validation.cpp): the filtered moments,
+// one layer per cascade.
+layout(binding = ST_BINDING_MOMENTS) uniform sampler2DArray uMoments;
+// PCSS (array and atlas storage): the same depth texture read raw for the blocker search.
+layout(binding = ST_BINDING_SHADOW_RAW) uniform sampler2DArray uShadowRaw;
 
 struct ShadowResult {
     float factor;  // 1 lit, 0 shadowed
@@ -106,14 +112,19 @@ float compareLinear(int i, vec2 uv, float z) {
     return texture(uShadowLinear, vec4(tapUv(i, uv), float(cascade[i].layer), z));
 }
 
-// Seed 004, "Derivative-based receiver plane depth bias": depth slope per unit of shadow-map
-// uv from the screen-space derivatives, dz/duv = J^-T (dz/dx, dz/dy), J = d(uv)/d(screen).
-vec2 receiverPlaneSlope(vec3 ts) {
-    vec3 dx = dFdx(ts);
-    vec3 dy = dFdy(ts);
+// Seed 004, "Derivative-Based Offset": the receiver's depth slope per unit of cascade i's uv,
+// dz/duv = J^-T (dz/dx, dz/dy), J = d(uv)/d(screen). The screen derivatives are of the world
+// position, taken once for all cascades; every cascade shares one light view (a rotation), and the
+// linear part of its shadow matrix only scales that view, so this is seed 004's light-view
+// derivative per cascade. Derivatives of each pixel's own texel coordinate would mix two cascades'
+// coordinates in a 2x2 quad that straddles a split: the seams seed 004 warns about.
+vec2 receiverPlaneSlope(int i, vec3 wsDx, vec3 wsDy) {
+    mat3 m = mat3(cascade[i].shadowMatrix);
+    vec3 dx = m * wsDx;
+    vec3 dy = m * wsDy;
     mat2 j = mat2(dx.xy, dy.xy);
     float det = determinant(j);
-    if (abs(det) < 1e-12) return vec2(0.0);
+    if (abs(det) < 1e-18) return vec2(0.0);
     return transpose(inverse(j)) * vec2(dx.z, dy.z);
 }
 
@@ -136,19 +147,126 @@ float hardShadow(int i, vec3 ts, float tanTheta) {
     return compareNearest(i, ts.xy, biasedDepth(i, ts.z, tanTheta));
 }
 
-float sampleCascade(int i, vec3 ts, vec2 dzduv, float tanTheta) {
-    float z = biasedDepth(i, ts.z, tanTheta);
-    if (filterKind == ST_FILTER_HARD) return compareNearest(i, ts.xy, z);
-    if (filterKind == ST_FILTER_PCF2X2) return compareLinear(i, ts.xy, z);
+// The reference depth of a tap at uv, for a receiver at ts.xy of depth z: on the receiver's plane
+// with receiver-plane bias, else z.
+float tapDepth(vec2 uv, vec2 at, float z, vec2 dzduv) {
+    return receiverPlane != 0 ? z + dot(uv - at, dzduv) : z;
+}
+
+// One nearest compare; with receiver-plane bias against the receiver's depth at the centre of the
+// texel that is read, which is where the stored depth was rasterised.
+// Texels are cascade i's own (uvPerTexel: an atlas's, or a smaller per-cascade map's).
+float hardTap(int i, vec2 uv, float z, vec2 dzduv) {
+    vec2 t = cascade[i].uvPerTexel.xy;
+    vec2 centre = (floor(uv / t) + 0.5) * t;
+    return compareNearest(i, uv, tapDepth(centre, uv, z, dzduv));
+}
+
+// The 2x2 bilinear comparison. The hardware's (one reference depth for all four texels) unless
+// receiver-plane bias is on: then four nearest compares, each against the receiver's depth at its
+// texel's centre, blended with the same bilinear weights.
+float pcf2x2(int i, vec2 uv, float z, vec2 dzduv) {
+    if (receiverPlane == 0) return compareLinear(i, uv, z);
+    vec2 texel = cascade[i].uvPerTexel.xy;
+    vec2 t = uv / texel - 0.5;
+    vec2 base = floor(t);
+    vec2 f = t - base;
+    vec4 s;
+    for (int k = 0; k < 4; ++k) {
+        vec2 c = (base + vec2(k & 1, k >> 1) + 0.5) * texel;
+        s[k] = compareNearest(i, c, tapDepth(c, uv, z, dzduv));
+    }
+    return mix(mix(s.x, s.y, f.x), mix(s.z, s.w, f.x), f.y);
+}
+
+// One bilinear tap of a larger kernel at `tap`, for the receiver at uv: the hardware's comparison,
+// or with receiver-plane bias the four texels compared each at its own centre (pcf2x2): one
+// reference depth for four texels up to a texel away would bring back the acne the bias removes.
+float bilinearTap(int i, vec2 tap, vec2 uv, float z, vec2 dzduv) {
+    if (receiverPlane == 0) return compareLinear(i, tap, z);
+    return pcf2x2(i, tap, tapDepth(tap, uv, z, dzduv), dzduv);
+}
+
+// N x N hardware-bilinear taps one texel apart, weighted by the product of the 1-D weights the CPU
+// uploads (box or Gaussian, normalised: renderer/csm/filter_weights.h).
+float pcfNxN(int i, vec2 uv, float z, vec2 dzduv) {
     int r = filterSize / 2;
     float sum = 0.0;
     for (int y = -r; y <= r; ++y)
         for (int x = -r; x <= r; ++x) {
-            vec2 duv = vec2(x, y) * cascade[i].uvPerTexel.xy;
-            float zt = receiverPlane != 0 ? z + dot(duv, dzduv) : z;
-            sum += compareLinear(i, ts.xy + duv, zt);
+            vec2 tap = uv + vec2(x, y) * cascade[i].uvPerTexel.xy;
+            float w = pcfWeights[(x + r) / 4][(x + r) % 4] * pcfWeights[(y + r) / 4][(y + r) % 4];
+            sum += w * bilinearTap(i, tap, uv, z, dzduv);
         }
-    return sum / float((2 * r + 1) * (2 * r + 1));
+    return sum;
+}
+
+// A moment filter's lit share from the filtered moments of cascade i. The footprint comes from
+// the world-position derivatives (textureGrad): implicit ones are undefined in this branch.
+float momentShadow(int i, vec2 uv, float z, vec3 wsDx, vec3 wsDy) {
+    mat3 m = mat3(cascade[i].shadowMatrix);
+    vec4 b = textureGrad(uMoments, vec3(uv, float(cascade[i].layer)), (m * wsDx).xy, (m * wsDy).xy);
+    float lit;
+    if (filterKind == ST_FILTER_VSM) {
+        lit = chebyshevUpperBound(b.xy, z, minVariance);
+    } else if (filterKind == ST_FILTER_MSM) {
+        if (moments16 != 0) b = msmDequantise(b);
+        lit = 1.0 - msmShadowIntensity(mix(b, vec4(0.5), momentBias), z);
+    } else {
+        lit = evsmLit(b, z, vec2(evsmPosExp, evsmNegExp), filterKind == ST_FILTER_EVSM4, minVariance);
+    }
+    return pow(lit, bleedExponent);
+}
+
+// Cascade i's texels across the penumbra a blocker at depth zb casts on a receiver at depth z
+// (shadow texture depths). A sun of angular diameter theta spreads a blocker's edge over
+// (d_r - d_b) tan(theta) metres on a receiver d_r - d_b metres behind it along the light (the
+// directional form of Fernando 2005's w = (d_r - d_b) w_light / d_b); depths are z times the
+// cascade's depthRange, metres are texels times its texelWorld.
+float penumbraTexels(int i, float z, float zb) {
+    return (z - zb) * cascade[i].depthRange * sunTan / cascade[i].texelWorld;
+}
+
+// PCSS (Fernando 2005, "Percentage-Closer Soft Shadows"): the mean depth of the blockers found in a
+// blockerTaps^2 grid over the widest penumbra possible here (a blocker at the box's sun side),
+// then filterSize^2 PCF taps with the preset's weights spread over the estimated penumbra. Both
+// radii are capped at pcssMaxRadius texels; a point sun (sunTan 0) leaves the 2x2 comparison.
+float pcss(int i, vec2 uv, float z, vec2 dzduv) {
+    vec2 texel = cascade[i].uvPerTexel.xy;
+    float searchRadius = clamp(0.5 * penumbraTexels(i, z, 0.0), 1.0, pcssMaxRadius);
+    int n = blockerTaps / 2;
+    float blockers = 0.0;
+    float count = 0.0;
+    for (int y = -n; y <= n; ++y)
+        for (int x = -n; x <= n; ++x) {
+            vec2 tap = uv + vec2(x, y) * (searchRadius / float(n)) * texel;
+            float d = textureLod(uShadowRaw, vec3(tapUv(i, tap), float(cascade[i].layer)), 0.0).r;
+            if (d < tapDepth(tap, uv, z, dzduv)) {
+                blockers += d;
+                count += 1.0;
+            }
+        }
+    if (count == 0.0) return 1.0;
+    float radius = min(0.5 * penumbraTexels(i, z, blockers / count), pcssMaxRadius);
+    int r = filterSize / 2;
+    float sum = 0.0;
+    for (int y = -r; y <= r; ++y)
+        for (int x = -r; x <= r; ++x) {
+            vec2 tap = uv + vec2(x, y) * (radius / float(r)) * texel;
+            float w = pcfWeights[(x + r) / 4][(x + r) % 4] * pcfWeights[(y + r) / 4][(y + r) % 4];
+            sum += w * bilinearTap(i, tap, uv, z, dzduv);
+        }
+    return sum;
+}
+
+float sampleCascade(int i, vec3 ts, vec3 wsDx, vec3 wsDy, float tanTheta) {
+    float z = biasedDepth(i, ts.z, tanTheta);
+    if (filterKind >= ST_FILTER_VSM && filterKind <= ST_FILTER_MSM) return momentShadow(i, ts.xy, z, wsDx, wsDy);
+    vec2 dzduv = receiverPlane != 0 ? receiverPlaneSlope(i, wsDx, wsDy) : vec2(0.0);
+    if (filterKind == ST_FILTER_HARD) return hardTap(i, ts.xy, z, dzduv);
+    if (filterKind == ST_FILTER_PCF2X2) return pcf2x2(i, ts.xy, z, dzduv);
+    if (filterKind == ST_FILTER_PCSS) return pcss(i, ts.xy, z, dzduv);
+    return pcfNxN(i, ts.xy, z, dzduv);
 }
 
 // 0 in the cascade's interior, rising to 1 at its far end over the blend band (seed 004).
@@ -181,13 +299,13 @@ ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth)
     int cn = min(ci + 1, cascadeCount - 1);
     vec3 ts = shadowCoord(ci, wsPos, wsNormal);
     vec3 tsNext = shadowCoord(cn, wsPos, wsNormal);
-    vec2 slope = receiverPlaneSlope(ts);
-    vec2 slopeNext = receiverPlaneSlope(tsNext);
+    vec3 wsDx = dFdx(wsPos);
+    vec3 wsDy = dFdy(wsPos);
     if (c < 0) return ShadowResult(1.0, -1);
     float tanTheta = tanToLight(nDotL);
-    float f = sampleCascade(c, ts, slope, tanTheta);
+    float f = sampleCascade(c, ts, wsDx, wsDy, tanTheta);
     float w = blendWeight(c, vsDepth, ts);
-    if (w > 0.0) f = mix(f, sampleCascade(cn, tsNext, slopeNext, tanTheta), w);
+    if (w > 0.0) f = mix(f, sampleCascade(cn, tsNext, wsDx, wsDy, tanTheta), w);
     f = mix(f, 1.0, fadeWeight(c, vsDepth));
     return ShadowResult(f, c);
 }

@@ -60,9 +60,10 @@ Figures figuresOf(const metrics::PresetMeasurement& m) {
     const bool cost = m.cost.has_value();
     f.push_back({"gpu_shadow_ms", cost ? m.cost->gpuShadowMs : kNaN});
     f.push_back({"gpu_main_ms", cost ? m.cost->gpuMainMs : kNaN});
-    f.push_back({"gpu_ms", cost ? m.cost->gpuShadowMs + m.cost->gpuMainMs : kNaN});
+    f.push_back({"gpu_ms", cost ? m.cost->gpuShadowMs + m.cost->gpuFilterMs + m.cost->gpuMainMs : kNaN});
     f.push_back({"cpu_ms", cost ? m.cost->cpuMs : kNaN});
-    f.push_back({"shadow_map_mib", cost ? double(m.cost->shadowMapBytes) / (1024.0 * 1024.0) : kNaN});
+    f.push_back({"shadow_map_mib",
+                 cost ? double(m.cost->shadowMapBytes + m.cost->filterMapBytes) / (1024.0 * 1024.0) : kNaN});
     f.push_back({"caster_triangles", cost ? double(m.cost->triangles) : kNaN});
     f.push_back({"caster_draws", cost ? double(m.cost->draws) : kNaN});
     return f;

@@ -48,6 +48,8 @@ struct UiInputs {
                                              // shown instead of the per-cascade tiles
     int shadowAtlasWidth = 0;                // the atlas's texels
     int shadowAtlasHeight = 0;
+    std::vector<ImTextureID> shadowVariance; // moment filters: per cascade the moments' spread
+                                             // (black none .. yellow wide); empty otherwise
     ImTextureID sideView = nullptr;          // picture-in-picture image (the side camera, or the main
                                              // view when swapped); nullptr hides the window
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order

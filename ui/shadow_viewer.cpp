@@ -38,7 +38,21 @@ void drawTile(UiFrame& f, int layer, float size) {
     recordItem(f.state.rects, "shadow.tile" + std::to_string(layer));
     if (ImGui::IsItemClicked()) f.state.zoomLayer = layer;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tileTooltip(f, layer).c_str());
+    const auto l = static_cast<std::size_t>(layer);
+    const bool moments = l < f.in.shadowVariance.size();
+    if (moments) {
+        // A moment filter's tile shows the first moment as depth; its spread sits beside it.
+        ImGui::SameLine();
+        ImGui::Image(f.in.shadowVariance[l], ImVec2(size, size), kUvTopLeft, kUvBottomRight, ImVec4(1, 1, 1, 1),
+                     ImVec4(0.5f, 0.5f, 0.5f, 1.0f));
+        recordItem(f.state.rects, "shadow.variance" + std::to_string(layer));
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Cascade %d: spread of the moments (standard deviation)", layer);
+    }
     cascadeSwatch(layer);
+    if (moments) {
+        ImGui::SameLine(0.0f, 0.0f);
+        ImGui::TextUnformatted(": mean depth | spread");
+    }
     ImGui::EndGroup();
     ImGui::PopID();
 }
@@ -87,7 +101,10 @@ void drawTiles(UiFrame& f) {
         ImGui::TextDisabled("No shadow maps yet.");
         return;
     }
-    const TileGrid grid = fitTiles(count, ImGui::GetContentRegionAvail());
+    // A moment filter's layer is two images wide (mean depth and spread).
+    const int wide = f.in.shadowVariance.empty() ? 1 : 2;
+    TileGrid grid = fitTiles(count * wide, ImGui::GetContentRegionAvail());
+    grid.columns = std::max(1, grid.columns / wide);
     for (int layer = 0; layer < count; ++layer) {
         if (layer % grid.columns != 0) ImGui::SameLine();
         drawTile(f, layer, grid.size);

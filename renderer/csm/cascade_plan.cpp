@@ -1,6 +1,7 @@
 #include "renderer/csm/cascade_plan.h"
 
 #include "renderer/csm/split_range.h"
+#include "renderer/csm/selection.h"
 #include "renderer/csm/splits.h"
 
 #include <glm/trigonometric.hpp>
@@ -59,6 +60,7 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.stabilize = cs.stabilize;
     fp.zExtension = cs.zExtension;
     fp.zExtensionDistance = cs.zExtensionDistance;
+    fp.padTexels = s.filter.padding ? filterPaddingTexels(s.filter) : 0;
     fp.wsSceneBounds = wsSceneBounds;
     plan.storage = planStorage(cs);
     for (int i = 0; i < cs.count; ++i) {

@@ -31,6 +31,9 @@ void validateSplits(std::span<const float> splits, int index) {
 
 void validateFit(const FitParams& p) {
     if (p.mapSize < 2) fail("cascades.mapSize must be >= 2, got " + str(p.mapSize));
+    if (p.padTexels < 0 || 2 * p.padTexels >= p.mapSize)
+        fail("padding (" + str(p.padTexels) + " texels) must be >= 0 and under half of the cascade's map size (" +
+             str(p.mapSize) + ")");
     const float d = p.zExtensionDistance;
     if (p.zExtension == ZExtension::Distance && !(d >= 0.0f && std::isfinite(d)))
         fail("cascades.zExtensionDistance must be >= 0, got " + str(d));
@@ -83,13 +86,15 @@ SliceBox sphereBox(const CameraParams& cam, float vsNear, float vsFar, const glm
 
 // SDSM (Lauritzen et al. 2011, section 3.2): the light box of the samples the cascade holds,
 // not of its whole slice. x,y padded by whole texels for the filter's taps and the normal
-// offset; z widened by 1% of its range so the farthest receiver is not on the far plane.
+// offset (samplePadTexels, or the filter's padding when that is wider); z widened by 1% of its
+// range so the farthest receiver is not on the far plane.
 SliceBox samplesBox(const Aabb& lsSamples, const SliceBox& slice, const FitParams& p) {
     Aabb b = lsSamples;
     const glm::vec2 size0 = glm::max(glm::vec2(b.extent()), glm::vec2(1e-3f));
     const float m = static_cast<float>(p.mapSize);
     // Padding k texels of the padded box on each side: size = size0 m / (m - 2k).
-    glm::vec2 size = size0 * (m / std::max(1.0f, m - 2.0f * p.samplePadTexels));
+    const float pad = std::max(p.samplePadTexels, static_cast<float>(p.padTexels));
+    glm::vec2 size = size0 * (m / std::max(1.0f, m - 2.0f * pad));
     if (p.stabilize) {
         // Steps of 1/16 of the slice's box: the size (so the texel) is the same over frames
         // whose samples differ a little, and snapping then keeps the grid still.
@@ -102,6 +107,19 @@ SliceBox samplesBox(const Aabb& lsSamples, const SliceBox& slice, const FitParam
     const float zPad = 0.01f * std::max(b.extent().z, 1e-2f);
     b.min.z -= zPad, b.max.z += zPad;
     return {b, size};
+}
+
+// Seed 004 PCF padding: the slice of width w keeps `pad` texels of the m-texel map on each side,
+// so the grown width W satisfies W (m - 2 pad) / m = w.
+SliceBox padBox(SliceBox box, int pad, int mapSize) {
+    if (pad == 0) return box;
+    for (int axis = 0; axis < 2; ++axis) {
+        const float grow = box.size[axis] * float(pad) / float(mapSize - 2 * pad);
+        box.ls.min[axis] -= grow;
+        box.ls.max[axis] += grow;
+        box.size[axis] += 2.0f * grow;
+    }
+    return box;
 }
 
 // Seed 001 texel snapping: min x,y moved down to whole texels, max = min + size, so the box only
@@ -168,8 +186,10 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     SliceBox box = p.fit == FitMode::Sphere ? sphereBox(cam, out.vsNear, out.vsFar, out.lsView)
                                             : cornerBox(cam, out.vsNear, out.vsFar, out.lsView);
     if (p.fit == FitMode::Samples && p.lsSamples) {
-        box = samplesBox(*p.lsSamples, box, p);
+        box = samplesBox(*p.lsSamples, box, p);  // padded there, by the wider of the two paddings
         out.fittedToSamples = true;
+    } else {
+        box = padBox(box, p.padTexels, p.mapSize);
     }
     if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize);
     out.lsSlice = box.ls;

@@ -27,6 +27,7 @@ struct FitParams {
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
     int mapSize = 1024;               // texels per side of this cascade's map
+    int padTexels = 0;                // texels added on each x,y side so kernels stay in the map
     Aabb wsSceneBounds;               // all casters; used by SceneBounds
     // FitMode::Samples: the light-space bounds of the visible samples the cascade holds
     // (depth_bounds.h); nullopt (no sample, or not reduced) falls back to the slice's box.
@@ -53,8 +54,9 @@ struct CascadeFit {
 // - Sphere: a square box around the slice's bounding sphere, radius rounded up to 1/16 m so its
 //   size does not change when the camera rotates (seed 001).
 // - Samples: the box of the visible samples (SDSM, Lauritzen et al. 2011, section 3.2), padded
-//   by samplePadTexels; with stabilize its size is rounded up to 1/16 of the slice box's so it
-//   changes in steps, then snapped like the others.
+//   by the wider of samplePadTexels and padTexels; with stabilize its size is rounded up to
+//   1/16 of the slice box's so it changes in steps, then snapped like the others.
+// - padTexels: the box grown on each x,y side so the slice keeps padTexels texels to the rim.
 // - stabilize: min x,y moved down to a multiple of the texel size, max = min + size (seed 001).
 // - z: the slice's range, extended toward the sun by zExtensionDistance, or unioned with the
 //   scene bounds (seed 003, using transformAabb), or left as is for None/Pancake.

@@ -5,6 +5,8 @@
 
 #include <glm/vec4.hpp>
 
+#include <cmath>
+
 namespace st::csm {
 
 int selectCascadeInterval(std::span<const float> splits, float vsDepth) {
@@ -15,8 +17,18 @@ int selectCascadeInterval(std::span<const float> splits, float vsDepth) {
     return -1;
 }
 
+int filterReachTexels(FilterKind filter, int filterSize) {
+    return filter == FilterKind::PcfNxN ? filterSize / 2 + 1 : 1;
+}
+
+int filterPaddingTexels(const FilterSettings& f) {
+    if (f.kind == FilterKind::Pcss) return static_cast<int>(std::ceil(f.pcssMaxRadius)) + 1;
+    if (isMomentFilter(f.kind)) return f.blurRadius + 1;
+    return filterReachTexels(f.kind, f.size);
+}
+
 float mapEdgeMarginTexels(FilterKind filter, int filterSize) {
-    return filter == FilterKind::PcfNxN ? float(filterSize / 2) + 1.0f : 1.0f;
+    return float(filterReachTexels(filter, filterSize));
 }
 
 float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize) {

@@ -23,6 +23,11 @@ int selectCascadeInterval(std::span<const float> splits, float vsDepth);
 float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize);
 // The same margin in texels: taps radius + 1 for NxN PCF, 1 otherwise.
 float mapEdgeMarginTexels(FilterKind filter, int filterSize);
+// That border in texels: how far the filter's taps reach from the texel a point falls in.
+int filterReachTexels(FilterKind filter, int filterSize);
+// The padding filter.padding adds around each light box (seed 004, "Padding for PCF Kernels"): the
+// reach above, PCSS's capped radius + 1, or a moment filter's blur radius + 1.
+int filterPaddingTexels(const FilterSettings& filter);
 
 // Map-based (seed 003/004): the first cascade whose shadow texture coordinates x,y lie inside
 // [margin, 1-margin] and z inside [0,1]; -1 if none. Like the shader, each cascade looks at the

@@ -24,7 +24,9 @@ std::string toJsonText(const FrameStats& s) {
     }
     db["source"] = s.depthBounds.source;
     j["shadowMapBytes"] = s.shadowMapBytes;
+    j["filterMapBytes"] = s.filterMapBytes;
     j["gpuShadowMs"] = s.gpuShadowMs;
+    j["gpuFilterMs"] = s.gpuFilterMs;
     j["gpuMainMs"] = s.gpuMainMs;
     j["gpuDepthBoundsMs"] = s.gpuDepthBoundsMs;
     j["cpuMs"] = s.cpuMs;

@@ -50,7 +50,9 @@ struct FrameStats {
     DepthBoundsStats depthBounds;
     std::vector<CascadeStats> cascades;
     std::size_t shadowMapBytes = 0;
+    std::size_t filterMapBytes = 0;  // the filter's own maps (moment array and scratch), 0 if none
     double gpuShadowMs = 0.0;  // all cascades
+    double gpuFilterMs = 0.0;  // the filter's extra passes (moment maps and their blur)
     double gpuMainMs = 0.0;
     double gpuDepthBoundsMs = 0.0;  // depth prepass and reduction (0 without them)
     double cpuMs = 0.0;        // CPU time to plan and submit the frame

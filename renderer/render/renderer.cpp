@@ -23,9 +23,10 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     stats.sceneTriangles = scene_.scene().triangleCount();
     float aspect = float(s.output.width) / float(s.output.height);
     target_.ensure(s.output.width, s.output.height);
-    // Timers: cascades 0..count-1, the main pass, the depth prepass and reduction.
+    // Timers: cascades 0..count-1, the main pass, the depth prepass and reduction, the moment maps.
     const int boundsTimer = s.cascades.count + 1;
-    timers_.beginFrame(s.cascades.count + 2);
+    const int filterTimer = s.cascades.count + 2;
+    timers_.beginFrame(s.cascades.count + 3);
     csm::SampleBounds samples;
     const bool reduce = csm::needsSampleBounds(s.cascades);
     if (reduce) {
@@ -42,6 +43,15 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     shadowPass(s, stats);
     cascadeBlock_.upload(cascadeBlock(s, plan_));  // after: a kept map brings the fit it was drawn with
     auditZExtension(s, stats);
+    const bool moments = isMomentFilter(s.filter.kind);
+    if (moments) {
+        // Made from the maps just drawn, with the filter's figures of the cascade block.
+        timers_.begin(filterTimer);
+        cascadeBlock_.bind(ST_BLOCK_CASCADES);
+        moments_.build(shadowMaps_, s);
+        timers_.end(filterTimer);
+        stats.filterMapBytes = moments_.bytes();
+    }
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
     else
@@ -55,6 +65,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     }
     stats.gpuMainMs = timers_.milliseconds(s.cascades.count);
     if (reduce) stats.gpuDepthBoundsMs = timers_.milliseconds(boundsTimer);
+    if (moments) stats.gpuFilterMs = timers_.milliseconds(filterTimer);
     return stats;
 }
 
@@ -146,6 +157,7 @@ void Renderer::bindShadingInputs() const {
     frameBlock_.bind(ST_BLOCK_FRAME);
     cascadeBlock_.bind(ST_BLOCK_CASCADES);
     shadowMaps_.bindForSampling();
+    if (moments_.layers() > 0) moments_.bindForSampling();
 }
 
 void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out) {
@@ -177,6 +189,7 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     bindShadingInputs();
     drawVisible(viewProj);
     shadowMaps_.unbindSamplers();
+    glBindSampler(ST_BINDING_MOMENTS, 0);
     timers_.end(s.cascades.count);
 }
 

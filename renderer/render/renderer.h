@@ -12,6 +12,7 @@
 #include "renderer/render/frame_stats.h"
 #include "renderer/render/gpu_timer.h"
 #include "renderer/render/line_pass.h"
+#include "renderer/render/moment_maps.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/scene_gpu.h"
 #include "renderer/render/shadow_maps.h"
@@ -68,6 +69,8 @@ public:
     void bindShadingInputs() const;
     const SceneGpu& sceneGpu() const { return scene_; }
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
+    // The moment maps of the last render() with a moment filter; layers() is 0 before one.
+    const MomentMaps& momentMaps() const { return moments_; }
     int width() const { return target_.width(); }
     int height() const { return target_.height(); }
 
@@ -91,6 +94,7 @@ private:
     gpu::Program depthProgram_;
     gpu::Program mainProgram_;
     ShadowMaps shadowMaps_;
+    MomentMaps moments_;
     GpuTimers timers_;
     LinePass lines_;
     OffscreenTarget target_;

@@ -1,9 +1,14 @@
 #include "renderer/render/shader_blocks.h"
 
 #include "renderer/csm/conventions.h"
+#include "renderer/csm/filter_weights.h"
 #include "renderer/render/side_view.h"
 #include "renderer/settings/field_table.h"
 
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -30,6 +35,10 @@ void store(const FieldInfo& field, const gpu_if::MemberInfo& member, const Setti
 }
 }  // namespace
 
+// exp(c) of the warp must stay finite and its square representable: 42 for 32-bit floats
+// (e^84 < 3.4e38) and 5.54 for 16-bit ones (e^11.08 < 65504), Lauritzen & McCool 2008.
+float evsmExponent(float requested, bool sixteenBit) { return std::min(requested, sixteenBit ? 5.54f : 42.0f); }
+
 void copyShaderFields(const Settings& s, std::span<const gpu_if::MemberInfo> members, void* block) {
     for (const FieldInfo& field : fieldTable()) {
         if (field.shader.empty()) continue;
@@ -49,6 +58,11 @@ gpu_if::FrameBlock frameBlock(const Settings& s, const csm::CascadePlan& plan) {
 gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& plan) {
     gpu_if::CascadeBlock b;
     copyShaderFields(s, b);
+    const auto w = csm::pcfWeights(s.filter.weights, s.filter.size);
+    for (std::size_t k = 0; k < w.size(); ++k) b.pcfWeights[k / 4][static_cast<int>(k % 4)] = w[k];
+    b.evsmPosExp = evsmExponent(s.filter.evsmPositive, s.filter.moments16);
+    b.evsmNegExp = evsmExponent(s.filter.evsmNegative, s.filter.moments16);
+    b.sunTan = std::tan(glm::radians(s.light.angularDiameter));
     for (int i = 0; i < s.cascades.count; ++i) {
         const csm::CascadeFit& f = plan.cascades[static_cast<std::size_t>(i)];
         gpu_if::CascadeData& c = b.cascade[i];

@@ -23,6 +23,8 @@ void copyShaderFields(const Settings& s, Block& block) {
 
 gpu_if::FrameBlock frameBlock(const Settings& s, const csm::CascadePlan& plan);
 gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& plan);
+// The EVSM exponent used: `requested` clamped so the warped moments fit the storage's floats.
+float evsmExponent(float requested, bool sixteenBit);
 gpu_if::MaterialBlock materialBlock(const Material& m, bool textured);
 
 }  // namespace st

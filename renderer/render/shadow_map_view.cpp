@@ -10,6 +10,7 @@ namespace st {
 
 ShadowMapView::ShadowMapView() {
     program_ = linkShaderFiles("fullscreen.vert", "depth_view.frag", "depth_view");
+    momentProgram_ = linkShaderFiles("fullscreen.vert", "moment_view.frag", "moment_view");
     emptyVao_ = gpu::createVertexArray();
     fbo_ = gpu::createFramebuffer();
     raw_ = gpu::createSampler();
@@ -33,24 +34,30 @@ void ShadowMapView::drawCascade(const ShadowMaps& maps, int i, float lo, float h
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void ShadowMapView::update(const ShadowMaps& maps, int tileSize) {
+void ShadowMapView::update(const ShadowMaps& maps, int tileSize, const MomentMaps* moments) {
     gpu::DebugGroup group("shadow map view");
     retired_.clear();
-    auto retire = [this] {
-        retired_.push_back(std::move(tiles_.back()));
-        tiles_.pop_back();
+    const bool showMoments = moments && maps.layout().storage == CascadeStorage::Array &&
+                             moments->layers() == maps.cascades() && moments->size() == maps.tile(0).size;
+    auto retire = [this](std::vector<gpu::Texture>& tiles) {
+        retired_.push_back(std::move(tiles.back()));
+        tiles.pop_back();
     };
     if (tileSize != tileSize_) {
-        while (!tiles_.empty()) retire();
+        while (!tiles_.empty()) retire(tiles_);
+        while (!varianceTiles_.empty()) retire(varianceTiles_);
         rawTile_ = gpu::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(rawTile_.id(), 1, GL_R32F, tileSize, tileSize);
     }
     tileSize_ = tileSize;
-    while (int(tiles_.size()) > maps.cascades()) retire();
-    while (int(tiles_.size()) < maps.cascades()) {
-        tiles_.push_back(gpu::createTexture(GL_TEXTURE_2D));
-        glTextureStorage2D(tiles_.back().id(), 1, GL_RGBA8, tileSize, tileSize);
-    }
+    const int varianceTiles = showMoments ? maps.cascades() : 0;
+    while (int(tiles_.size()) > maps.cascades()) retire(tiles_);
+    while (int(varianceTiles_.size()) > varianceTiles) retire(varianceTiles_);
+    for (auto* tiles : {&tiles_, &varianceTiles_})
+        while (int(tiles->size()) < (tiles == &tiles_ ? maps.cascades() : varianceTiles)) {
+            tiles->push_back(gpu::createTexture(GL_TEXTURE_2D));
+            glTextureStorage2D(tiles->back().id(), 1, GL_RGBA8, tileSize, tileSize);
+        }
     glUseProgram(program_.id());
     glBindVertexArray(emptyVao_.id());
     glBindSampler(ST_BINDING_DEPTH_VIEW, raw_.id());
@@ -66,6 +73,7 @@ void ShadowMapView::update(const ShadowMaps& maps, int tileSize) {
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tiles_[static_cast<std::size_t>(i)].id(), 0);
         drawCascade(maps, i, ranges_[std::size_t(i)].first, ranges_[std::size_t(i)].second, false);
     }
+    if (showMoments) drawMoments(*moments);
     const bool atlas = maps.layout().storage == CascadeStorage::Atlas;
     const csm::MapTexture extent = atlas ? maps.layout().textures.front() : csm::MapTexture{};
     const int w = atlas ? 2 * tileSize : 0;
@@ -92,6 +100,29 @@ void ShadowMapView::update(const ShadowMaps& maps, int tileSize) {
         }
     }
     glBindSampler(ST_BINDING_DEPTH_VIEW, 0);
+}
+
+// Over each cascade's tile the moment map's first moment, as depth on the ramp of the tile's own
+// depths (the moments are made from them), and beside it the spread (moment_view.frag).
+void ShadowMapView::drawMoments(const MomentMaps& moments) {
+    glUseProgram(momentProgram_.id());
+    glBindTextureUnit(ST_BINDING_DEPTH_VIEW, moments.texture());
+    for (std::size_t i = 0; i < tiles_.size(); ++i) {
+        gpu_if::OverlayBlock tile;
+        tile.layer = static_cast<int>(i);
+        tile.depthLo = ranges_[i].first;
+        tile.depthHi = ranges_[i].second;
+        tile.uvRect = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+        for (int image = 0; image < 2; ++image) {
+            tile.brightness = float(image);  // moment_view.frag: 0 the mean as depth, 1 the spread
+            overlay_.upload(tile);
+            overlay_.bind(ST_BLOCK_OVERLAY);
+            const GLuint target = image == 0 ? tiles_[i].id() : varianceTiles_[i].id();
+            glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target, 0);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+    }
+    glUseProgram(program_.id());
 }
 
 // The tile's samples drawn raw into rawTile_ and read back: the tile shows exactly these texels,

@@ -4,6 +4,7 @@
 // the atlas storage also the whole atlas as one image, each tile outlined where it lies.
 #include "renderer/gpu/gl.h"
 #include "renderer/gpu/uniform_buffer.h"
+#include "renderer/render/moment_maps.h"
 #include "renderer/render/shadow_maps.h"
 
 #include "shaders/interface.h"
@@ -18,9 +19,15 @@ public:
     ShadowMapView();
     // Re-renders every cascade's tile (tileSize² texels each) and, for an atlas, the atlas image
     // (2 tileSize wide, the atlas's aspect); the grey ramp spans the stored depths the tile's own
-    // samples hold.
-    void update(const ShadowMaps& maps, int tileSize);
+    // samples hold. With `moments` (a moment filter's maps of this frame, array storage, the
+    // frame's cascade block bound at ST_BLOCK_CASCADES) a tile shows the first moment as depth on
+    // that ramp and a second tile per cascade its spread (varianceTexture).
+    void update(const ShadowMaps& maps, int tileSize, const MomentMaps* moments = nullptr);
     GLuint layerTexture(int layer) const { return tiles_[layer].id(); }
+    // The spread tile of a layer, 0 without moments.
+    GLuint varianceTexture(int layer) const {
+        return layer < int(varianceTiles_.size()) ? varianceTiles_[layer].id() : 0;
+    }
     int layers() const { return static_cast<int>(tiles_.size()); }
     // Stored depth (0 = the sun's side of the light box) of the nearest and farthest written
     // sample of the cascade's tile; {0, 1} where nothing was written.
@@ -32,7 +39,9 @@ public:
 private:
     // Cascade i's tile into the bound framebuffer, its depth [lo, hi] as the grey ramp (hi < 0: raw).
     void drawCascade(const ShadowMaps& maps, int i, float lo, float hi, bool border);
+    void drawMoments(const MomentMaps& moments);
     gpu::Program program_;
+    gpu::Program momentProgram_;
     gpu::VertexArray emptyVao_;
     gpu::Framebuffer fbo_;
     gpu::Sampler raw_;  // no depth compare: read the stored depth itself
@@ -41,6 +50,7 @@ private:
     gpu::Texture atlas_;
     int atlasWidth_ = 0;
     int atlasHeight_ = 0;
+    std::vector<gpu::Texture> varianceTiles_;
     // Textures replaced by the last update(), kept one more update: a UI draw list recorded before
     // this frame's update() may still name them.
     std::vector<gpu::Texture> retired_;

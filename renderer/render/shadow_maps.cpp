@@ -47,6 +47,10 @@ void ShadowMaps::ensure(const csm::StorageLayout& layout) {
     if (!fbo_) fbo_ = gpu::createFramebuffer();
     if (!nearest_) nearest_ = compareSampler(GL_NEAREST);
     if (!linear_) linear_ = compareSampler(GL_LINEAR);
+    if (!raw_) {
+        raw_ = compareSampler(GL_NEAREST);
+        glSamplerParameteri(raw_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    }
     layout_ = layout;
 }
 
@@ -82,11 +86,14 @@ void ShadowMaps::bindForSampling() const {
     glBindTextureUnit(ST_BINDING_SHADOW_LINEAR, textureAt(0));
     glBindSampler(ST_BINDING_SHADOW_NEAREST, nearest_.id());
     glBindSampler(ST_BINDING_SHADOW_LINEAR, linear_.id());
+    glBindTextureUnit(ST_BINDING_SHADOW_RAW, textureAt(0));
+    glBindSampler(ST_BINDING_SHADOW_RAW, raw_.id());
 }
 
 void ShadowMaps::unbindSamplers() const {
     glBindSampler(ST_BINDING_SHADOW_NEAREST, 0);
     glBindSampler(ST_BINDING_SHADOW_LINEAR, 0);
+    glBindSampler(ST_BINDING_SHADOW_RAW, 0);
     for (int i = 0; i < ST_MAX_CASCADES; ++i) glBindSampler(ST_BINDING_CASCADE_MAPS + i, 0);
 }
 

@@ -23,8 +23,9 @@ public:
     // padding is cleared once at allocation and never drawn into, so it stays lit.
     void beginCascade(int cascade, gpu::PassState state) const;
     GLuint framebuffer() const { return fbo_.id(); }
-    // Array and atlas: the one texture on both shadow bindings (nearest and linear compare);
-    // textures: texture i on ST_BINDING_CASCADE_MAPS + i with linear compare.
+    // Array and atlas: the one texture on both shadow bindings (nearest and linear compare) and,
+    // raw, on ST_BINDING_SHADOW_RAW (PCSS); textures: texture i on ST_BINDING_CASCADE_MAPS + i
+    // with linear compare.
     void bindForSampling() const;
     void unbindSamplers() const;
     const csm::StorageLayout& layout() const { return layout_; }
@@ -43,6 +44,7 @@ private:
     gpu::Sampler nearest_;
     gpu::Sampler linear_;
     csm::StorageLayout layout_;
+    gpu::Sampler raw_;
 };
 
 // Reads cascade i's tile back as depth values, row by row from the bottom (size x size floats).

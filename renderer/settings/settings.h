@@ -71,10 +71,31 @@ struct EnumNames<Selection> {
     static constexpr std::array<std::string_view, ST_SELECT_COUNT> names{"interval", "map"};
 };
 
-enum class FilterKind { Hard = ST_FILTER_HARD, Pcf2x2 = ST_FILTER_PCF2X2, PcfNxN = ST_FILTER_PCF_NXN };
+// Vsm..Msm filter a map of depth moments instead of comparing depths (renderer/render/moment_maps.h):
+// VSM (seed 004, Donnelly & Lauritzen 2006), EVSM with the positive warp or both (Lauritzen &
+// McCool 2008), MSM with four moments and the Hamburger reconstruction (Peters & Klein 2015).
+enum class FilterKind {
+    Hard = ST_FILTER_HARD,
+    Pcf2x2 = ST_FILTER_PCF2X2,
+    PcfNxN = ST_FILTER_PCF_NXN,
+    Vsm = ST_FILTER_VSM,
+    Evsm2 = ST_FILTER_EVSM2,
+    Evsm4 = ST_FILTER_EVSM4,
+    Msm = ST_FILTER_MSM,
+    Pcss = ST_FILTER_PCSS,
+};
 template <>
 struct EnumNames<FilterKind> {
-    static constexpr std::array<std::string_view, ST_FILTER_COUNT> names{"hard", "pcf2x2", "pcf-nxn"};
+    static constexpr std::array<std::string_view, ST_FILTER_COUNT> names{"hard", "pcf2x2", "pcf-nxn", "vsm",
+                                                                         "evsm2", "evsm4", "msm", "pcss"};
+};
+constexpr bool isMomentFilter(FilterKind k) { return k >= FilterKind::Vsm && k <= FilterKind::Msm; }
+
+// Weights of the NxN PCF taps: equal, or a Gaussian (seed 004, CascadedShadowMaps11).
+enum class FilterWeights { Box = ST_WEIGHTS_BOX, Gaussian = ST_WEIGHTS_GAUSSIAN };
+template <>
+struct EnumNames<FilterWeights> {
+    static constexpr std::array<std::string_view, ST_WEIGHTS_COUNT> names{"box", "gaussian"};
 };
 
 // Where the cascades' depth maps live (renderer/csm/storage_layout.h). Array: one layer per
@@ -109,7 +130,8 @@ static_assert(int(FitMode::Samples) == ST_FIT_COUNT - 1 && int(FitMode::Cascade)
 static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBounds::Off) == 0);
 static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::None) == 0);
 static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
-static_assert(int(FilterKind::PcfNxN) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
+static_assert(int(FilterKind::Pcss) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
+static_assert(int(FilterWeights::Gaussian) == ST_WEIGHTS_COUNT - 1 && int(FilterWeights::Box) == 0);
 static_assert(int(CascadeStorage::Textures) == ST_STORAGE_COUNT - 1 && int(CascadeStorage::Array) == 0);
 static_assert(int(View::Side) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
 
@@ -163,6 +185,20 @@ struct CascadeSettings {
 struct FilterSettings {
     FilterKind kind = FilterKind::Pcf2x2;
     int size = 3;  // taps per side for PcfNxN, odd, 3..9
+    FilterWeights weights = FilterWeights::Box;  // of the PcfNxN taps
+    bool padding = false;  // grow each light box so the kernel never reads past the map (seed 004)
+    // Moment filters (Vsm..Msm):
+    int blurRadius = 2;           // texels each side of the separable Gaussian blur, 0 = none
+    bool mipmaps = false;         // trilinear reads of a mipmapped moment array
+    bool moments16 = false;       // 16-bit storage (EVSM exponents clamp at 5.54, MSM quantised)
+    float minVariance = 1e-5f;    // VSM/EVSM variance floor, squared shadow-texture depth units
+    float bleedExponent = 1.0f;   // lit share raised to this power against light bleeding; 1 = off
+    float evsmPositive = 40.0f;   // EVSM exponents, clamped at 42 (32-bit) or 5.54 (16-bit)
+    float evsmNegative = 5.0f;
+    float momentBias = 3e-5f;     // MSM: share the moments are pulled toward 0.5
+    // PCSS (filter.size taps per side spread over the estimated penumbra):
+    int blockerTaps = 5;          // taps per side of the blocker search, odd
+    float pcssMaxRadius = 8.0f;   // texels: cap of the search and kernel radius
     bool operator==(const FilterSettings&) const = default;
 };
 

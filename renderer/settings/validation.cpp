@@ -195,6 +195,29 @@ void checkGround(const Settings& s, std::vector<SettingsIssue>& out) {
         out.push_back({"ground", "must be false for " + s.scene + ", which has its own ground"});
 }
 
+void checkReceiverPlane(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (!s.bias.receiverPlane || !isMomentFilter(s.filter.kind)) return;
+    out.push_back({"bias.receiverPlane", "must be false with filter.kind \"" + std::string(enumName(s.filter.kind)) +
+                                             "\": a moment filter compares no texel depths to put on the receiver's plane"});
+}
+
+// The moment maps are built as one array of one layer per cascade, all of one size
+// (renderer/render/moment_maps.h); an atlas tile or a texture of its own has no layer there.
+void checkMomentStorage(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (!isMomentFilter(s.filter.kind) || s.cascades.storage == CascadeStorage::Array) return;
+    out.push_back({"filter.kind", "\"" + std::string(enumName(s.filter.kind)) + "\" needs cascades.storage \"array\", got \"" +
+                                      std::string(enumName(s.cascades.storage)) +
+                                      "\": the moment maps hold one layer per cascade of one texture array"});
+}
+
+// PCSS's blocker search reads raw depths from the one depth texture of the array or the atlas;
+// the per-cascade textures are bound with depth compare only.
+void checkPcssStorage(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (s.filter.kind != FilterKind::Pcss || s.cascades.storage != CascadeStorage::Textures) return;
+    out.push_back({"filter.kind", "\"pcss\" needs cascades.storage \"array\" or \"atlas\", got \"textures\": the "
+                                  "blocker search reads raw depths from one depth texture"});
+}
+
 const std::vector<CrossRule>& crossRules() {
     static const std::vector<CrossRule> rules = {
         {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
@@ -217,6 +240,15 @@ const std::vector<CrossRule>& crossRules() {
          {"path.frames", "path.keyframes"},
          checkPathKeyframes},
         {"ground is for glTF scenes; built-in scenes have their own.", {"scene", "ground"}, checkGround},
+        {"bias.receiverPlane applies to the depth-compare filters (hard, pcf2x2, pcf-nxn), not to the moment "
+         "filters (vsm, evsm2, evsm4, msm).",
+         {"filter.kind", "bias.receiverPlane"},
+         checkReceiverPlane},
+        {"The moment filters (vsm, evsm2, evsm4, msm) need cascades.storage \"array\".",
+         {"filter.kind", "cascades.storage"},
+         checkMomentStorage},
+        {"filter.kind \"pcss\" needs cascades.storage \"array\" or \"atlas\".", {"filter.kind", "cascades.storage"},
+         checkPcssStorage},
     };
     return rules;
 }

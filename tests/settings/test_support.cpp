@@ -21,7 +21,10 @@ Settings everyFieldChanged() {
                   .mapSizes = {2048, 1024, 512}, .atlasPadding = 4, .fit = FitMode::Sphere, .stabilize = true,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
                   .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f};
-    s.filter = {.kind = FilterKind::PcfNxN, .size = 5};
+    s.filter = {.kind = FilterKind::PcfNxN, .size = 5, .weights = FilterWeights::Gaussian, .padding = true,
+                .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f,
+                .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
+                .pcssMaxRadius = 12.0f};
     s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
     s.output = {.width = 800, .height = 600, .view = View::Cascades};
     s.path = {.frames = 12,

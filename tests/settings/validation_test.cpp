@@ -1,4 +1,5 @@
 // validate() on in-memory Settings: the editor's check, same rules as the JSON reader.
+#include "renderer/settings/enum_names.h"
 #include "renderer/settings/validation.h"
 #include "tests/settings/test_support.h"
 
@@ -114,8 +115,53 @@ TEST(ValidationTest, UpdateIntervalsAreWholeFrames) {
     EXPECT_EQ(validate(s).size(), 1u);  // below the row's range
 }
 
+TEST(ValidationTest, ReceiverPlaneBiasNeedsADepthCompareFilter) {
+    Settings s;
+    s.bias.receiverPlane = true;
+    for (FilterKind k : {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN}) {
+        s.filter.kind = k;
+        EXPECT_TRUE(validate(s).empty()) << enumName(k);
+    }
+    s.filter.kind = FilterKind::Evsm4;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"bias.receiverPlane: must be false with filter.kind \"evsm4\": a "
+                                                    "moment filter compares no texel depths to put on the receiver's plane"});
+    s.bias.receiverPlane = false;
+    EXPECT_TRUE(validate(s).empty());
+}
+
+TEST(ValidationTest, MomentFiltersNeedTheArrayStorage) {
+    Settings s;
+    for (FilterKind k : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}) {
+        s.filter.kind = k;
+        s.cascades.storage = CascadeStorage::Array;
+        EXPECT_TRUE(validate(s).empty()) << enumName(k);
+        for (CascadeStorage storage : {CascadeStorage::Atlas, CascadeStorage::Textures}) {
+            s.cascades.storage = storage;
+            EXPECT_EQ(validate(s), std::vector<std::string>{
+                                       "filter.kind: \"" + std::string(enumName(k)) +
+                                       "\" needs cascades.storage \"array\", got \"" + std::string(enumName(storage)) +
+                                       "\": the moment maps hold one layer per cascade of one texture array"});
+        }
+    }
+    s.filter.kind = FilterKind::PcfNxN;  // the depth-compare filters read every storage
+    EXPECT_TRUE(validate(s).empty());
+}
+
+TEST(ValidationTest, PcssNeedsOneDepthTexture) {
+    Settings s;
+    s.filter.kind = FilterKind::Pcss;
+    for (CascadeStorage storage : {CascadeStorage::Array, CascadeStorage::Atlas}) {
+        s.cascades.storage = storage;
+        EXPECT_TRUE(validate(s).empty()) << enumName(storage);
+    }
+    s.cascades.storage = CascadeStorage::Textures;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"filter.kind: \"pcss\" needs cascades.storage \"array\" or "
+                                                    "\"atlas\", got \"textures\": the blocker search reads raw "
+                                                    "depths from one depth texture"});
+}
+
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 8u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 11u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Benchmark (prints figures, asserts nothing): every shadow filter on the yard and Truck Town at
+# 1280x720 with 4 cascades of 2048^2, measured in one `shadowtune measure` run, as ratios to the
+# hard 2x2 PCF of the same run. Columns: the shadow pass, the filter's own passes (moment maps and
+# their blur), the main pass (filtering included) in GPU ms (medians), all shadow memory (depth
+# array + the filter's maps), the nearest-test misclassification and the filtered error against
+# today's point-sun truth. (The soft truth of the sun's disc is added when it lands: issue 12 item 2.)
+#   scripts/bench_filters.sh [BUILD_DIR] [FRAMES]      needs jq; Truck Town needs ../shared/assets
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build/release}
+frames=${2:-5}
+out=$(mktemp -d) && trap 'rm -rf "$out"' EXIT
+scenes=("$root/presets/default.json")
+if [[ -d $root/../shared/assets/truck_town ]]; then
+  scenes+=("$root/presets/scenes/truck-town.json")
+else
+  echo "note: ../shared/assets not found, Truck Town skipped" >&2
+fi
+# name | filter object merged into the scene preset's filter (bias left as the preset has it)
+filters=(
+  'pcf2x2|{"kind":"pcf2x2"}'
+  'hard|{"kind":"hard"}'
+  'pcf5-box|{"kind":"pcf-nxn","size":5}'
+  'pcf5-gauss-pad|{"kind":"pcf-nxn","size":5,"weights":"gaussian","padding":true}'
+  'pcss7|{"kind":"pcss","size":7,"blockerTaps":5,"pcssMaxRadius":8}'
+  'vsm-r3|{"kind":"vsm","blurRadius":3}'
+  'vsm-r3-mips|{"kind":"vsm","blurRadius":3,"mipmaps":true}'
+  'evsm2-r3|{"kind":"evsm2","blurRadius":3}'
+  'evsm4-r3|{"kind":"evsm4","blurRadius":3}'
+  'evsm4-r3-16|{"kind":"evsm4","blurRadius":3,"moments16":true}'
+  'msm-r3|{"kind":"msm","blurRadius":3}'
+  'msm-r3-16|{"kind":"msm","blurRadius":3,"moments16":true}'
+)
+presets=()
+for scene in "${scenes[@]}"; do
+  stem=$(basename "$scene" .json)
+  for f in "${filters[@]}"; do
+    name=${f%%|*}
+    # Written beside the scene preset so its relative scene path still resolves; removed on exit.
+    p="$(dirname "$scene")/.bench-$stem-$name.json"
+    jq --argjson f "${f#*|}" '.filter = (.filter + $f) | .cascades.count = 4 | .cascades.mapSize = 2048
+      | .bias.receiverPlane = false | .path = {"frames": 0, "keyframes": []}' "$scene" >"$p"
+    presets+=("$p")
+  done
+done
+trap 'rm -rf "$out" "${presets[@]}"' EXIT
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); Mesa llvmpipe"
+"$build/shadowtune" measure "${presets[@]}" --out "$out" --size 1280x720 --frames "$frames" --no-flicker >"$out/log" 2>&1 ||
+  { cat "$out/log" >&2; exit 1; }
+for scene in "${scenes[@]}"; do
+  stem=$(basename "$scene" .json)
+  base="$out/.bench-$stem-pcf2x2/metrics.json"
+  echo
+  echo "$stem, 1280x720, 4x2048; ratios to pcf2x2 (absolute in brackets)"
+  printf '%-16s %16s %16s %16s %18s %14s %16s\n' filter "shadow ms" "filter ms" "main ms" "memory MiB" "misclass %" "filtered err"
+  for f in "${filters[@]}"; do
+    name=${f%%|*}
+    jq -r --arg name "$name" --slurpfile b "$base" '
+      def ratio(a; b): if b > 0 then (a / b * 100 | round / 100 | tostring) + "x" else "-" end;
+      .cost as $c | $b[0].cost as $k |
+      [$name,
+       ratio($c.gpuShadowMs; $k.gpuShadowMs) + " (" + ($c.gpuShadowMs * 10 | round / 10 | tostring) + ")",
+       ($c.gpuFilterMs * 10 | round / 10 | tostring),
+       ratio($c.gpuMainMs; $k.gpuMainMs) + " (" + ($c.gpuMainMs * 10 | round / 10 | tostring) + ")",
+       ratio($c.shadowMapBytes + $c.filterMapBytes; $k.shadowMapBytes + $k.filterMapBytes) + " ("
+         + (($c.shadowMapBytes + $c.filterMapBytes) / 1048576 | round | tostring) + ")",
+       (.accuracy.misclassified * 1000 | round / 10 | tostring),
+       (.accuracy.filteredError * 10000 | round / 10000 | tostring)]
+      | "\(.[0])|\(.[1])|\(.[2])|\(.[3])|\(.[4])|\(.[5])|\(.[6])"' "$out/.bench-$stem-$name/metrics.json" |
+      awk -F'|' '{printf "%-16s %16s %16s %16s %18s %14s %16s\n", $1, $2, $3, $4, $5, $6, $7}'
+  done
+done
