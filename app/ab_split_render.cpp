@@ -1,18 +1,15 @@
 #include "app/ab_split_render.h"
 
+#include "renderer/settings/method_on_view.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace st::app {
 
 Settings aOnLive(const Settings& a, const Settings& live) {
-    Settings s = a;
-    s.scene = live.scene;
-    s.ground = live.ground;
-    s.camera = live.camera;
-    s.light = live.light;
-    s.output = live.output;
-    s.path = live.path;
+    Settings s = methodOnView(a, live);
+    s.output = live.output;  // the split's halves are one image: the live size
     return s;
 }
 

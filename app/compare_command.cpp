@@ -1,5 +1,7 @@
 #include "app/compare_command.h"
 
+#include "renderer/settings/method_on_view.h"
+
 #include "app/compare_images.h"
 #include "app/preset_batch.h"
 
@@ -30,15 +32,6 @@ struct Side {
     Settings settings;
 };
 
-// B's settings with A's scene, camera, light and path: the same view, pixel for pixel.
-Settings onViewOf(const Settings& view, Settings s) {
-    s.scene = view.scene;
-    s.ground = view.ground;
-    s.camera = view.camera;
-    s.light = view.light;
-    s.path = view.path;
-    return s;
-}
 
 void checkMerged(const Side& b, const Side& a) {
     std::vector<std::string> problems = validate(b.settings);
@@ -52,7 +45,7 @@ std::pair<Side, Side> loadSides(const CompareOptions& opt) {
     Side a{"A", opt.a.stem().string(), opt.a, opt.a.parent_path(), loadPreset(opt.a)};
     Side b{"B", opt.b.stem().string(), opt.b, opt.b.parent_path(), loadPreset(opt.b)};
     if (!opt.keepBScene) {
-        b.settings = onViewOf(a.settings, b.settings);
+        b.settings = methodOnView(b.settings, a.settings);
         b.dir = a.dir;
     }
     if (opt.width) {
