@@ -6,14 +6,18 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace st::test {
 
-// A fresh folder per test under the system temp folder, removed afterwards.
+// A fresh folder per test under the system temp folder, removed afterwards; the pid keeps two
+// suites run at once (two clones, two build folders) out of each other's files.
 class TempDir {
 public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() / ("st-sweep-" + std::string(info->test_suite_name()) + "-" + info->name());
+        path_ = std::filesystem::temp_directory_path() / ("st-sweep-" + std::to_string(::getpid()) + "-" +
+                                                              std::string(info->test_suite_name()) + "-" + info->name());
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }
