@@ -64,6 +64,13 @@ void addBias(EngineExport& e, const Settings& s) {
           k == FilterKind::Pcf2x2 ? M::Exact : M::Approximated,
           k == FilterKind::Hard ? "Bevy has no unfiltered test; Hardware2x2 is the nearest"
                                 : "Gaussian: Castano's 9-tap filter, about a 5x5 kernel (Bevy's default)");
+    if (isMomentFilter(k))
+        e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent, "Bevy has no moment shadow maps");
+    if (k == FilterKind::Pcss)
+        e.add("DirectionalLight.soft_shadow_size", round6(s.light.angularDiameter * 3.14159265358979 / 180.0),
+              M::Approximated,
+              "light.angularDiameter in radians; Bevy's PCSS needs the experimental_pbr_pcss feature (the unit of this "
+              "field is not confirmed against Bevy's shader)");
     if (b.slope > 0.0f) e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "Bevy has no slope-scaled bias");
     if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Bevy has no receiver-plane bias");
 }
@@ -79,6 +86,7 @@ EngineExport exportBevy(const Settings& s, const PresetFacts& f) {
           c.fit == FitMode::Sphere && c.stabilize && c.zExtension == ZExtension::Pancake ? M::Approximated
                                                                                           : M::NoEquivalent,
           "Bevy always sizes a cascade by its slice's diagonal, snaps it and pancakes casters (unclipped depth)");
+    addShadowtuneOnly(e, s, false);
     return e;
 }
 

@@ -3,6 +3,7 @@
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/settings/number_text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -48,6 +49,38 @@ nlohmann::json numbers(const std::vector<double>& v) {
 
 std::string texelNote(const PresetFacts& f) {
     return formatNumber(round6(f.texel.front())) + " m (cascade 0 as shadowtune fits it in this preset)";
+}
+
+double fadeShareOfEnd(const Settings& s, const PresetFacts& f) {
+    if (s.cascades.fadeBand <= 0.0f || f.end <= 0.0f || f.splits.size() < 2) return 0.0;
+    const double lastStart = f.splits[f.splits.size() - 2];
+    return round6(double(s.cascades.fadeBand) * (double(f.end) - lastStart) / double(f.end));
+}
+
+std::string filterKindText(const Settings& s) {
+    return "filter.kind " + std::string(EnumNames<FilterKind>::names[size_t(s.filter.kind)]);
+}
+
+void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades) {
+    const CascadeSettings& c = s.cascades;
+    using M = Mapping;
+    if (c.depthBounds != DepthBounds::Off || c.fit == FitMode::Samples)
+        e.add("(depth-fitted cascades)", true, M::NoEquivalent,
+              "cascades.depthBounds / fit 'samples' fit the splits (and boxes) to the depth the camera sees each frame "
+              "(SDSM); the engine places its splits from the settings alone");
+    const bool mixedSizes = std::any_of(c.mapSizes.begin(), c.mapSizes.end(), [&](int v) { return v != c.mapSize; });
+    if (mixedSizes)
+        e.add("(map size per cascade)", numbers(std::vector<double>(c.mapSizes.begin(), c.mapSizes.end())), M::NoEquivalent,
+              "cascades.mapSizes: the engine gives every cascade one size; mapSize exported above");
+    const bool skips = std::any_of(c.updateInterval.begin(), c.updateInterval.end(), [](float v) { return v > 1.0f; });
+    if (skips)
+        e.add("(cascade update interval)", numbers(std::vector<double>(c.updateInterval.begin(), c.updateInterval.end())),
+              M::NoEquivalent, "cascades.updateInterval: frames between redraws of each cascade; no settings field for it");
+    if (s.filter.padding)
+        e.add("(PCF padding)", true, M::NoEquivalent, "filter.padding grows each light box by the kernel's reach (seed 004)");
+    if (!engineFades && c.fadeBand > 0.0f)
+        e.add("(far fade)", round6(c.fadeBand), M::NoEquivalent,
+              "cascades.fadeBand fades the last cascade's far end to lit; the engine cuts shadows off at the distance");
 }
 
 }  // namespace st::xport

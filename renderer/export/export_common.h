@@ -29,6 +29,16 @@ nlohmann::json numbers(const std::vector<double>& v);
 // The texel world size of the first cascade as text, for notes: "0.00885 m".
 std::string texelNote(const PresetFacts& f);
 
+// cascades.fadeBand fades the last fraction of the last cascade's range; engines state their fade as a
+// share of the whole shadow distance: fadeBand x (end - start of the last cascade) / end.
+double fadeShareOfEnd(const Settings& s, const PresetFacts& f);
+// "filter.kind vsm": for the notes of an engine's filter item.
+std::string filterKindText(const Settings& s);
+// Settings no engine's shadow settings expose (depth-fitted splits, a map size per cascade, cascades
+// redrawn every k frames, PCF padding; the far fade where `engineFades` is false): one no-equivalent
+// item each, only where the preset uses it, so an export never reads as complete when it is not.
+void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades);
+
 EngineExport exportGodot(const Settings& s, const PresetFacts& f);
 EngineExport exportUnity(const Settings& s, const PresetFacts& f);
 EngineExport exportUnreal(const Settings& s, const PresetFacts& f);

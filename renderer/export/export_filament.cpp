@@ -2,7 +2,8 @@
 // Sources (google/filament): filament/include/filament/LightManager.h (ShadowOptions field
 // initialisers and their doc comments: split positions from 0 = camera near to 1 = far or
 // shadowFar, constantBias in world units), shaders/src/shadowing.fs (ShadowSample_PCF_Low:
-// hardware PCF + 3x3 Gaussian from 4 bilinear taps, the default PCF quality).
+// hardware PCF + 3x3 Gaussian from 4 bilinear taps, the default PCF quality; ShadowSample_VSM:
+// moments of exp(vsmExponent x depth), and with ELVSM of -1/that too).
 #include "renderer/export/export_common.h"
 
 #include "renderer/settings/number_text.h"
@@ -30,6 +31,31 @@ void addCascades(EngineExport& e, const Settings& s, const PresetFacts& f) {
     e.add("stable", c.stabilize, M::Exact, "cascades.stabilize: snap to texels, rotation-invariant size");
 }
 
+// View::setShadowType (PCF, VSM, DPCF, PCSS) and, for VSM, View::setVsmShadowOptions.
+void addFilter(EngineExport& e, const Settings& s) {
+    const FilterKind k = s.filter.kind;
+    if (isMomentFilter(k)) {
+        e.add("View::setShadowType", "VSM", k == FilterKind::Msm ? M::NoEquivalent : M::Approximated,
+              k == FilterKind::Msm ? "Filament has no moment shadow maps of four moments; VSM is the nearest"
+                                   : "Filament's VSM warps depth by exp(vsmExponent x depth), i.e. EVSM with the "
+                                     "positive warp (ELVSM adds the negative one); shadowtune raises p_max to "
+                                     "filter.bleedExponent where Filament's lightBleedReduction cuts p_max off");
+        e.add("ShadowOptions.vsm.elvsm", k == FilterKind::Evsm4, M::Approximated,
+              "the exponential variant with a positive and a negative warp, as evsm4");
+        e.add("ShadowOptions.vsm.blurWidth", s.filter.blurRadius > 0 ? 2 * s.filter.blurRadius + 1 : 0, M::Approximated,
+              "2 x filter.blurRadius + 1 texels (0 = no blur); the Gaussian's sigma is Filament's own");
+        e.add("VsmShadowOptions.mipmapping", s.filter.mipmaps, M::Exact, "filter.mipmaps");
+        e.add("VsmShadowOptions.highPrecision", !s.filter.moments16, M::Exact, "32-bit moments unless filter.moments16");
+    } else if (k == FilterKind::Pcss) {
+        e.add("View::setShadowType", "PCSS", M::Approximated,
+              "blocker search and penumbra estimate; Filament sizes the penumbra with setSoftShadowOptions, "
+              "shadowtune from light.angularDiameter");
+    } else {
+        e.add("View::setShadowType", "PCF", k == FilterKind::Hard ? M::NoEquivalent : M::Approximated,
+              "PCF (default) samples with ShadowSample_PCF_Low, a 3x3 Gaussian from 4 hardware-compared taps");
+    }
+}
+
 void addBias(EngineExport& e, const Settings& s) {
     const BiasSettings& b = s.bias;
     e.add("constantBias", round6(b.constant), M::Exact, "metres, shadows moved away from the light");
@@ -38,9 +64,7 @@ void addBias(EngineExport& e, const Settings& s) {
     e.add("polygonOffsetSlope", round6(b.slope), M::Approximated,
           "glPolygonOffset factor: depth slope per texel, ~ texel x tan, shadowtune's slope unit");
     e.add("polygonOffsetConstant", 0.5, M::NoEquivalent, "units of depth resolution; Filament's default kept");
-    const FilterKind k = s.filter.kind;
-    e.add("View::setShadowType", "PCF", k == FilterKind::Hard ? M::NoEquivalent : M::Approximated,
-          "PCF (default) samples with ShadowSample_PCF_Low, a 3x3 Gaussian from 4 hardware-compared taps");
+    addFilter(e, s);
     if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "not a ShadowOptions field");
 }
 
@@ -55,6 +79,7 @@ EngineExport exportFilament(const Settings& s, const PresetFacts& f) {
     e.add("(light box fit)", "tight to the visible casters and receivers",
           s.cascades.fit == FitMode::Cascade ? M::Approximated : M::NoEquivalent,
           "Filament fits each light frustum to the slice and the scene; shadowtune's cascade fit is the slice alone");
+    addShadowtuneOnly(e, s, false);
     return e;
 }
 

@@ -71,10 +71,20 @@ void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
               formatNumber(round6(depthRange)) + " m) * 100; Godot's bias grows with each split's depth range");
     e.add("shadow_normal_bias", round6(b.normalOffset), M::Approximated,
           "texels of the split, as bias.normalOffset; Godot scales it by (1 - N.L) and drops its light-direction part");
+    const FilterKind k = s.filter.kind;
+    const bool taps = k == FilterKind::PcfNxN || k == FilterKind::Pcss;
     e.add("rendering/lights_and_shadows/directional_shadow/soft_shadow_filter_quality",
-          s.filter.kind == FilterKind::PcfNxN ? std::min(5, s.filter.size / 2 + 1) : 0, M::Approximated,
+          taps ? std::min(5, s.filter.size / 2 + 1) : isMomentFilter(k) ? 2 : 0, M::Approximated,
           "0 hard (one hardware-compared tap, like pcf2x2), 2 soft low (Godot's default) .. 5 ultra: rotated disk "
           "taps scaled by shadow_blur, not an NxN grid");
+    if (isMomentFilter(k))
+        e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent, "Godot 4 has no moment shadow maps; soft PCF is the nearest");
+    // DirectionalLight3D.light_angular_distance: the light's angular size in degrees; above 0 Godot
+    // runs PCSS (a blocker search, a penumbra growing with distance to the blocker).
+    const bool pcss = k == FilterKind::Pcss;
+    e.add("light_angular_distance", pcss ? round6(s.light.angularDiameter) : 0.0, pcss ? M::Approximated : M::Exact,
+          pcss ? "light.angularDiameter in degrees; Godot's PCSS kernel is its own, capped by soft_shadow_filter_quality"
+               : "0: no PCSS, as " + filterKindText(s));
     if (b.slope > 0.0f)
         e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "Godot has no slope-scaled bias for directional lights");
     if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Godot has no receiver-plane bias");
@@ -87,8 +97,11 @@ EngineExport exportGodot(const Settings& s, const PresetFacts& f) {
     addSplits(e, s, f);
     addFit(e, s, f);
     addBias(e, s, f);
-    e.add("directional_shadow_fade_start", 1.0, M::NoEquivalent,
-          "shadowtune does not fade shadows out; 1.0 cuts off at max distance as shadowtune does (Godot's default 0.8)");
+    const bool fades = s.cascades.fadeBand > 0.0f;
+    e.add("directional_shadow_fade_start", round6(1.0 - fadeShareOfEnd(s, f)), fades ? M::Approximated : M::Exact,
+          fades ? "1 - cascades.fadeBand x the last cascade's range / max_distance: where Godot's fade begins"
+                : "1.0: shadows cut off at max_distance, as this preset's (no cascades.fadeBand; Godot's default 0.8)");
+    addShadowtuneOnly(e, s, true);
     return e;
 }
 

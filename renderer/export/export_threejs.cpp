@@ -49,9 +49,19 @@ void addFitAndBias(EngineExport& e, const Settings& s) {
           "negative moves toward the light (CSM.js's default +1e-6 moves 2 mm away: shadowtune cannot go below 0)");
     e.add("fade", c.blendBand > 0.0f, M::Approximated, "CSM.js fades over a fixed margin, not blendBand's fraction");
     const FilterKind k = s.filter.kind;
-    e.add("renderer.shadowMap.type", k == FilterKind::Hard ? "BasicShadowMap" : "PCFShadowMap",
-          k == FilterKind::Hard ? M::Exact : M::Approximated,
-          k == FilterKind::Hard ? "one unfiltered tap" : "a fixed ring of compared taps within shadowRadius texels");
+    if (isMomentFilter(k)) {
+        e.add("renderer.shadowMap.type", "VSMShadowMap", k == FilterKind::Vsm ? M::Approximated : M::NoEquivalent,
+              k == FilterKind::Vsm ? "a two-moment map blurred by three.js; no light-bleeding reduction"
+                                   : "three.js's only moment map is VSM; " + filterKindText(s) + " has no equivalent");
+        e.add("light.shadow.radius", s.filter.blurRadius, M::Approximated,
+              "filter.blurRadius: three.js's VSM blur radius in texels (its kernel is its own, blurSamples taps)");
+    } else {
+        e.add("renderer.shadowMap.type", k == FilterKind::Hard ? "BasicShadowMap" : "PCFShadowMap",
+              k == FilterKind::Hard ? M::Exact : k == FilterKind::Pcss ? M::NoEquivalent : M::Approximated,
+              k == FilterKind::Hard   ? "one unfiltered tap"
+              : k == FilterKind::Pcss ? "three.js has no PCSS map type; PCF is the nearest"
+                                      : "a fixed ring of compared taps within shadowRadius texels");
+    }
     e.add("(cascade fit)", "diagonal-sized box, texel-snapped", c.fit == FitMode::Sphere && c.stabilize
                                                                     ? M::Approximated : M::NoEquivalent,
           "CSM.js sizes each box by the slice's larger diagonal and snaps its centre to texels");
@@ -67,6 +77,7 @@ EngineExport exportThreeJs(const Settings& s, const PresetFacts& f) {
     EngineExport e{Engine::ThreeJs, "three.js: CSM addon (examples/jsm/csm/CSM.js)", {}};
     addSplits(e, s, f);
     addFitAndBias(e, s);
+    addShadowtuneOnly(e, s, false);
     return e;
 }
 

@@ -41,33 +41,45 @@ void addCascades(EngineExport& e, const Settings& s, const PresetFacts& f) {
 
 void addBiasAndFilter(EngineExport& e, const Settings& s, const PresetFacts& f) {
     const BiasSettings& b = s.bias;
-    const bool soft = s.filter.kind == FilterKind::PcfNxN;
+    const FilterKind k = s.filter.kind;
+    const bool soft = k != FilterKind::Hard && k != FilterKind::Pcf2x2;  // URP's only filtered mode is soft
     const double texel = f.texel.front() * (soft ? 2.5 : 1.0);  // ShadowUtils.GetShadowBias: x2.5 when soft
     e.add("shadowDepthBias", round6(b.constant / texel), M::Approximated,
           "bias.constant / texel " + texelNote(f) + (soft ? " / 2.5 (soft shadows)" : "") +
               "; URP's depth bias is a multiple of each cascade's texel, shadowtune's is metres");
     e.add("shadowNormalBias", round6(b.normalOffset / (soft ? 2.5 : 1.0)), M::Approximated,
           "texels, as bias.normalOffset; URP moves the caster inward, scaled by 1 - N.L");
-    e.add("supportsSoftShadows", soft, s.filter.kind == FilterKind::Hard ? M::Approximated : M::Exact,
-          s.filter.kind == FilterKind::Hard ? "URP's hard shadows still take one hardware-compared (2x2) tap"
-                                            : "off: one hardware-compared tap = pcf2x2; on: tent PCF");
+    const bool pcfLike = k == FilterKind::Hard || k == FilterKind::Pcf2x2 || k == FilterKind::PcfNxN;
+    e.add("supportsSoftShadows", soft, !pcfLike || k == FilterKind::Hard ? M::Approximated : M::Exact,
+          k == FilterKind::Hard ? "URP's hard shadows still take one hardware-compared (2x2) tap"
+          : pcfLike             ? "off: one hardware-compared tap = pcf2x2; on: tent PCF"
+                                : "tent PCF is the nearest URP asset setting to " + filterKindText(s));
     if (soft)
-        e.add("softShadowQuality", s.filter.size <= 3 ? "Low" : s.filter.size <= 5 ? "Medium" : "High", M::Approximated,
-              "tent-filtered PCF (Low ~3x3, Medium 5x5, High 7x7), not a box of NxN taps");
+        e.add("softShadowQuality", k != FilterKind::PcfNxN || s.filter.size > 5 ? "High" : s.filter.size <= 3 ? "Low" : "Medium",
+              M::Approximated, "tent-filtered PCF (Low ~3x3, Medium 5x5, High 7x7), not a box of NxN taps");
+    if (!pcfLike)
+        e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent,
+              "the URP asset has no moment (VSM/EVSM/MSM) or PCSS filter for the main light");
     if (b.slope > 0.0f) e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "URP has no slope-scaled bias");
     if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "URP has no receiver-plane bias");
 }
 
-void addUnmapped(EngineExport& e, const Settings& s) {
+void addUnmapped(EngineExport& e, const Settings& s, const PresetFacts& f) {
     const CascadeSettings& c = s.cascades;
     const bool stable = c.fit == FitMode::Sphere && c.stabilize;
     e.add("(cascade fit)", "stable fit: bounding sphere, texel-snapped", stable ? M::Approximated : M::NoEquivalent,
           stable ? "shadowtune's sphere fit with snapping; URP's spheres come from the engine's culling code"
                  : "URP always uses a stable sphere fit");
-    e.add("cascadeBorder", 0.2, M::NoEquivalent,
-          "URP fades the last cascade out over this fraction; shadowtune has no fade (URP's default kept)");
+    // ShadowUtils.GetScaleAndBiasForLinearDistanceFade: the fade runs over squared distance from
+    // ((1 - border) x shadowDistance)^2 to shadowDistance^2; border < 0.0001 cuts off there.
+    const double border = fadeShareOfEnd(s, f);
+    e.add("cascadeBorder", border, c.fadeBand > 0.0f ? M::Approximated : M::Exact,
+          c.fadeBand > 0.0f ? "cascades.fadeBand x the last cascade's range / shadowDistance; URP fades linearly in "
+                              "squared distance, shadowtune in view depth"
+                            : "0: shadows end at shadowDistance, as this preset's (no cascades.fadeBand)");
     if (c.blendBand > 0.0f)
         e.add("(cascade blending)", round6(c.blendBand), M::NoEquivalent, "URP does not blend between cascades");
+    addShadowtuneOnly(e, s, true);
 }
 
 }  // namespace
@@ -76,7 +88,7 @@ EngineExport exportUnity(const Settings& s, const PresetFacts& f) {
     EngineExport e{Engine::Unity, "Unity URP: UniversalRenderPipelineAsset shadows", {}};
     addCascades(e, s, f);
     addBiasAndFilter(e, s, f);
-    addUnmapped(e, s);
+    addUnmapped(e, s, f);
     return e;
 }
 

@@ -50,8 +50,18 @@ void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
           "the conversion to shadowtune's texel x tan unit is not confirmed against the UE5 source");
     if (b.normalOffset > 0.0f)
         e.add("(normal offset)", round6(b.normalOffset), M::NoEquivalent, "UE's CSM has no user normal-offset bias");
-    e.add("r.Shadow.FilterMethod", 0, s.filter.kind == FilterKind::PcfNxN ? M::Approximated : M::NoEquivalent,
-          "0 = PCF; UE's kernel is set by r.ShadowQuality (default 5), not by a tap count");
+    const FilterKind k = s.filter.kind;
+    if (k == FilterKind::Pcss) {
+        e.add("r.Shadow.FilterMethod", 1, M::Approximated,
+              "1 = PCSS (experimental in UE): blocker search and a penumbra from the light's source angle");
+        e.add("LightSourceAngle", round6(s.light.angularDiameter), M::Exact,
+              "light.angularDiameter: UE's angular diameter of the light in degrees (its default 0.5357 is the sun)");
+    } else {
+        e.add("r.Shadow.FilterMethod", 0, k == FilterKind::PcfNxN ? M::Approximated : M::NoEquivalent,
+              "0 = PCF; UE's kernel is set by r.ShadowQuality (default 5), not by a tap count");
+    }
+    if (isMomentFilter(k))
+        e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent, "UE's cascaded shadow maps have no moment filter");
 }
 
 }  // namespace
@@ -64,7 +74,11 @@ EngineExport exportUnreal(const Settings& s, const PresetFacts& f) {
     e.add("(cascade fit)", "bounding sphere, texel-snapped", c.fit == FitMode::Sphere && c.stabilize ? M::Approximated
                                                                                                      : M::NoEquivalent,
           "UE fits each cascade's bounding sphere and snaps it; other fits cannot be set");
-    e.add("ShadowDistanceFadeoutFraction", 0.1, M::NoEquivalent, "shadowtune does not fade out; UE's default kept");
+    // ShadowDistanceFadeoutFraction: the fade at the far end, a fraction of the dynamic shadow distance.
+    e.add("ShadowDistanceFadeoutFraction", fadeShareOfEnd(s, f), c.fadeBand > 0.0f ? M::Approximated : M::Exact,
+          c.fadeBand > 0.0f ? "cascades.fadeBand x the last cascade's range / shadow distance"
+                            : "0: no fade, as this preset's (no cascades.fadeBand; UE's default 0.1)");
+    addShadowtuneOnly(e, s, true);
     e.add("r.Shadow.Virtual.Enable", 0, M::Exact, "virtual shadow maps off: the cascaded path these settings drive");
     return e;
 }

@@ -64,6 +64,68 @@ TEST(ExportMathTest, ExactFieldsFollowThePreset) {
     EXPECT_NEAR(number(exportSettings(s, Engine::Filament), "constantBias"), 0.05, 1e-7);
 }
 
+// Near 1, last cascade 60..100, fadeBand 0.5: the fade covers 20 m, a fifth of the distance.
+TEST(ExportMathTest, FarFadeIsAShareOfTheShadowDistance) {
+    Settings s = handSplits();
+    s.cascades.fadeBand = 0.5f;
+    EXPECT_NEAR(number(exportSettings(s, Engine::Unity), "cascadeBorder"), 0.2, 1e-6);
+    EXPECT_NEAR(number(exportSettings(s, Engine::Godot), "directional_shadow_fade_start"), 0.8, 1e-6);
+    EXPECT_NEAR(number(exportSettings(s, Engine::Unreal), "ShadowDistanceFadeoutFraction"), 0.2, 1e-6);
+    for (Engine e : {Engine::Bevy, Engine::ThreeJs, Engine::Filament})
+        EXPECT_EQ(exportSettings(s, e).find("(far fade)")->mapping, Mapping::NoEquivalent) << kEngineNames[size_t(e)];
+    s.cascades.fadeBand = 0.0f;  // no fade: the engines' cut-off, stated as exact
+    EXPECT_EQ(exportSettings(s, Engine::Unity).find("cascadeBorder")->mapping, Mapping::Exact);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "directional_shadow_fade_start"), 1.0);
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("(far fade)"), nullptr);
+}
+
+// A moment filter or PCSS never reads as an exact PCF setting: each engine names its nearest
+// mode or says it has none.
+TEST(ExportMathTest, MomentFiltersAndPcssMapToTheEnginesOwnModes) {
+    Settings s = handSplits();
+    s.filter.kind = FilterKind::Vsm;
+    const EngineExport unity = exportSettings(s, Engine::Unity);
+    EXPECT_EQ(unity.find("supportsSoftShadows")->value, true);
+    EXPECT_EQ(unity.find("supportsSoftShadows")->mapping, Mapping::Approximated);
+    EXPECT_EQ(unity.find("(filter.kind vsm)")->mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(exportSettings(s, Engine::ThreeJs).find("renderer.shadowMap.type")->value, "VSMShadowMap");
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("View::setShadowType")->value, "VSM");
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("ShadowOptions.vsm.elvsm")->value, false);
+    s.filter.kind = FilterKind::Evsm4;
+    s.filter.blurRadius = 3;
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("ShadowOptions.vsm.elvsm")->value, true);
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("ShadowOptions.vsm.blurWidth")->value, 7);
+    for (Engine e : {Engine::Godot, Engine::Unreal, Engine::Bevy})
+        EXPECT_EQ(exportSettings(s, e).find("(filter.kind evsm4)")->mapping, Mapping::NoEquivalent) << kEngineNames[size_t(e)];
+    s.filter.kind = FilterKind::Pcss;
+    s.light.angularDiameter = 0.53f;
+    EXPECT_NEAR(number(exportSettings(s, Engine::Godot), "light_angular_distance"), 0.53, 1e-6);
+    EXPECT_EQ(exportSettings(s, Engine::Unreal).find("r.Shadow.FilterMethod")->value, 1);
+    EXPECT_NEAR(number(exportSettings(s, Engine::Unreal), "LightSourceAngle"), 0.53, 1e-6);
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("View::setShadowType")->value, "PCSS");
+    s.filter.kind = FilterKind::Pcf2x2;
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "light_angular_distance"), 0.0);
+    EXPECT_EQ(exportSettings(s, Engine::Unreal).find("LightSourceAngle"), nullptr);
+}
+
+// Settings no engine exposes are listed as such, and only when the preset uses them.
+TEST(ExportMathTest, ShadowtuneOnlySettingsAreListedWhereUsed) {
+    Settings s = handSplits();
+    for (size_t i = 0; i < kEngineNames.size(); ++i)
+        EXPECT_EQ(exportSettings(s, Engine(i)).find("(depth-fitted cascades)"), nullptr) << kEngineNames[i];
+    s.cascades.depthBounds = DepthBounds::Fit;
+    s.cascades.updateInterval = {1, 1, 2, 4};
+    s.filter.padding = true;
+    for (size_t i = 0; i < kEngineNames.size(); ++i) {
+        const EngineExport e = exportSettings(s, Engine(i));
+        for (const char* name : {"(depth-fitted cascades)", "(cascade update interval)", "(PCF padding)"}) {
+            ASSERT_NE(e.find(name), nullptr) << kEngineNames[i] << " " << name;
+            EXPECT_EQ(e.find(name)->mapping, Mapping::NoEquivalent);
+        }
+    }
+    EXPECT_EQ(exportSettings(s, Engine::Unity).find("(cascade update interval)")->value, nlohmann::json({1, 1, 2, 4}));
+}
+
 TEST(ExportMathTest, EngineNames) {
     EXPECT_EQ(parseEngine("godot"), Engine::Godot);
     EXPECT_EQ(parseEngine("threejs"), Engine::ThreeJs);

@@ -33,6 +33,7 @@ TEST(ExportRoundTripTest, GodotGivesItsDefaultsBack) {
     EXPECT_DOUBLE_EQ(number(e, "directional_shadow_split_3"), 0.5);
     EXPECT_DOUBLE_EQ(number(e, "directional_shadow_max_distance"), 100.0);
     EXPECT_DOUBLE_EQ(number(e, "directional_shadow_pancake_size"), 20.0);
+    EXPECT_NEAR(number(e, "directional_shadow_fade_start"), 0.8, 1e-4);
     EXPECT_EQ(value(e, "directional_shadow_blend_splits"), false);
     EXPECT_NEAR(number(e, "shadow_bias"), 0.1, 1e-3);
     EXPECT_DOUBLE_EQ(number(e, "shadow_normal_bias"), 2.0);
@@ -52,6 +53,7 @@ TEST(ExportRoundTripTest, UnityGivesItsDefaultsBack) {
     EXPECT_NEAR(number(e, "shadowDepthBias"), 1.0, 1e-3);
     EXPECT_DOUBLE_EQ(number(e, "shadowNormalBias"), 1.0);
     EXPECT_EQ(value(e, "supportsSoftShadows"), false);
+    EXPECT_NEAR(number(e, "cascadeBorder"), 0.2, 1e-4);
 }
 
 TEST(ExportRoundTripTest, UnrealGivesItsDefaultsBack) {
@@ -62,6 +64,7 @@ TEST(ExportRoundTripTest, UnrealGivesItsDefaultsBack) {
     EXPECT_NEAR(number(e, "CascadeDistributionExponent"), 3.0, 1e-3);
     EXPECT_EQ(e.find("CascadeDistributionExponent")->mapping, Mapping::Exact);  // splits reproduced within 1 cm
     EXPECT_DOUBLE_EQ(number(e, "CascadeTransitionFraction"), 0.1);
+    EXPECT_NEAR(number(e, "ShadowDistanceFadeoutFraction"), 0.1, 1e-4);
     EXPECT_EQ(value(e, "r.Shadow.MaxCSMResolution"), 2048);
     // LightComponent.cpp: ShadowBias 0.5, ShadowSlopeBias 0.5.
     EXPECT_NEAR(number(e, "ShadowBias"), 0.5, 1e-3);
