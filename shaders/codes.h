@@ -67,6 +67,7 @@
 #define ST_VIEW_SHADOW 2
 #define ST_VIEW_TEXEL_DENSITY 3
 #define ST_VIEW_SIDE 4
-#define ST_VIEW_COUNT 5
+#define ST_VIEW_TEXEL_GRID 5  // seed 003: each map filled with a checker of output.texelBlock texels
+#define ST_VIEW_COUNT 6
 
 #endif

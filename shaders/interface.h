@@ -57,7 +57,7 @@
     M(float, intensity)                                                                           \
     M(float, ambient)                                                                             \
     M(int, viewMode)   /* ST_VIEW_* */                                                            \
-    M(int, framePad0)
+    M(int, texelBlock) /* texel-grid view: texels per checker block */
 
 // Per pass (and per cascade in the shadow pass): what the draws are seen through.
 #define ST_VIEW_BLOCK(M, A) M(mat4, viewProj) /* ws -> clip of this pass */

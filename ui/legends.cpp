@@ -1,12 +1,14 @@
 #include "ui/legends.h"
 
 #include "renderer/render/cascade_tints.h"
+#include "ui/field_rules.h"
 #include "ui/panels.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace st::ui {
 namespace {
@@ -60,18 +62,53 @@ void cascadeKey(int count) {
     }
 }
 
-Rect drawCascadeLegend(ImDrawList* list, const Rect& scene, int count) {
+// A swatch and a label per cascade, under an optional title line.
+static Rect drawLabelledCascadeLegend(ImDrawList* list, const Rect& scene, const std::vector<std::string>& labels,
+                                       const std::string& title) {
     const float line = ImGui::GetTextLineHeight(), pad = 6.0f;
-    const float width = pad * 2.0f + ImGui::CalcTextSize("C0").x + line + 4.0f;
+    float text = title.empty() ? 0.0f : ImGui::CalcTextSize(title.c_str()).x - line - 4.0f;
+    for (const std::string& l : labels) text = std::max(text, ImGui::CalcTextSize(l.c_str()).x);
+    const float width = std::min(pad * 2.0f + text + line + 4.0f, scene.width() - 2.0f * pad);
+    const float top = title.empty() ? 0.0f : line + 2.0f;
     const Rect r{{scene.max.x - width - pad, scene.min.y + pad},
-                 {scene.max.x - pad, scene.min.y + pad * 2.0f + float(count) * (line + 2.0f)}};
+                 {scene.max.x - pad, scene.min.y + pad * 2.0f + top + float(labels.size()) * (line + 2.0f)}};
     list->AddRectFilled(r.min, r.max, kBackdrop, 3.0f);
-    for (int i = 0; i < count; ++i) {
-        const ImVec2 p{r.min.x + pad, r.min.y + pad + float(i) * (line + 2.0f)};
-        list->AddRectFilled(p, {p.x + line, p.y + line}, ImGui::GetColorU32(cascadeColour(i)));
-        list->AddText({p.x + line + 4.0f, p.y}, kText, ("C" + std::to_string(i)).c_str());
+    list->PushClipRect(r.min, r.max, true);
+    if (!title.empty()) list->AddText({r.min.x + pad, r.min.y + pad}, kText, title.c_str());
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const ImVec2 p{r.min.x + pad, r.min.y + pad + top + float(i) * (line + 2.0f)};
+        list->AddRectFilled(p, {p.x + line, p.y + line}, ImGui::GetColorU32(cascadeColour(int(i))));
+        list->AddText({p.x + line + 4.0f, p.y}, kText, labels[i].c_str());
     }
+    list->PopClipRect();
     return r;
+}
+
+static std::vector<std::string> cascadeNames(int count) {
+    std::vector<std::string> out;
+    for (int i = 0; i < count; ++i) out.push_back("C" + std::to_string(i));
+    return out;
+}
+
+Rect drawCascadeLegend(ImDrawList* list, const Rect& scene, int count) {
+    return drawLabelledCascadeLegend(list, scene, cascadeNames(count), {});
+}
+
+// Texel-grid view: what one checker square covers in each cascade, from the frame's texel sizes.
+static std::vector<std::string> blockSizes(const UiFrame& f, int count) {
+    std::vector<std::string> out;
+    for (int i = 0; i < count; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        const bool known = f.in.stats && k < f.in.stats->cascades.size();
+        char text[64];
+        if (known)
+            std::snprintf(text, sizeof text, "C%d  %s", i,
+                          formatLength(f.in.stats->cascades[k].texelWorldSize * float(f.s.output.texelBlock)).c_str());
+        else
+            std::snprintf(text, sizeof text, "C%d", i);
+        out.push_back(text);
+    }
+    return out;
 }
 
 Rect drawDensityLegend(ImDrawList* list, const Rect& scene) {
@@ -114,7 +151,11 @@ void drawSceneLegends(UiFrame& f) {
     if (scene.width() < 120.0f || scene.height() < 80.0f) return;
     ImDrawList* list = ImGui::GetBackgroundDrawList();
     const int count = f.in.stats ? static_cast<int>(f.in.stats->cascades.size()) : f.s.cascades.count;
-    if (f.s.output.view == View::Cascades) f.state.rects["legend.cascades"] = asItem(drawCascadeLegend(list, scene, count));
+    if (f.s.output.view == View::Cascades)
+        f.state.rects["legend.cascades"] = asItem(drawCascadeLegend(list, scene, count));
+    if (f.s.output.view == View::TexelGrid)
+        f.state.rects["legend.texelGrid"] = asItem(drawLabelledCascadeLegend(
+            list, scene, blockSizes(f, count), "square = " + std::to_string(f.s.output.texelBlock) + " texels:"));
     if (f.s.output.view == View::TexelDensity) f.state.rects["legend.density"] = asItem(drawDensityLegend(list, scene));
 }
 

@@ -17,6 +17,7 @@
 #include "renderer/render/scene_gpu.h"
 #include "renderer/render/shadow_maps.h"
 #include "renderer/render/side_view.h"
+#include "renderer/render/texel_cloud.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 #include "shaders/interface.h"
@@ -100,6 +101,7 @@ private:
     OffscreenTarget target_;
     csm::CascadePlan plan_;
     std::unique_ptr<DepthBoundsPass> depthBounds_;  // on first use
+    std::unique_ptr<TexelCloudPass> texelCloud_;    // on first use (output.sideTexels)
     gpu::UniformBuffer<gpu_if::FrameBlock> frameBlock_;
     gpu::UniformBuffer<gpu_if::CascadeBlock> cascadeBlock_;
     gpu::UniformBuffer<gpu_if::ViewBlock> viewBlock_;

@@ -228,8 +228,16 @@ std::vector<FieldInfo> outputRows() {
          .unit = "px", .kind = K::Int, .min = 16, .max = 8192, .step = 1, .change = C::Output,
          ST_FIELD_ACCESS(output.height)},
         {.path = "output.view", .label = "View",
-         .help = "Shaded scene, cascade colours, shadow term, pixels per shadow texel, or a side view of the light boxes.",
+         .help = "Shaded, cascade colours, shadow term, pixels per texel, side view of the light boxes, or a texel "
+                 "checker per map.",
          .kind = K::Enum, .enumNames = enumNames<View>(), .shader = "viewMode", ST_FIELD_ACCESS(output.view)},
+        {.path = "output.texelBlock", .label = "Texel block",
+         .help = "Texel-grid view: checker squares of this many texels a side; their size shows each map's resolution.",
+         .unit = "texels", .kind = K::Int, .min = 1, .max = 256, .step = 1, .shader = "texelBlock",
+         ST_FIELD_ACCESS(output.texelBlock)},
+        {.path = "output.sideTexels", .label = "Texels in world",
+         .help = "Side view: each shadow texel drawn at the world point it stores, in its cascade's tint (seed 003).",
+         .kind = K::Bool, ST_FIELD_ACCESS(output.sideTexels)},
     };
 }
 

@@ -117,10 +117,12 @@ enum class View {
     Shadow = ST_VIEW_SHADOW,
     TexelDensity = ST_VIEW_TEXEL_DENSITY,
     Side = ST_VIEW_SIDE,
+    TexelGrid = ST_VIEW_TEXEL_GRID,
 };
 template <>
 struct EnumNames<View> {
-    static constexpr std::array<std::string_view, ST_VIEW_COUNT> names{"shaded", "cascades", "shadow", "texel-density", "side"};
+    static constexpr std::array<std::string_view, ST_VIEW_COUNT> names{"shaded", "cascades", "shadow", "texel-density", "side",
+                                                                      "texel-grid"};
 };
 
 // The codes of an enum run 0..COUNT-1 with no gap, so a value indexes its name table and a code
@@ -133,7 +135,7 @@ static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Inter
 static_assert(int(FilterKind::Pcss) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
 static_assert(int(FilterWeights::Gaussian) == ST_WEIGHTS_COUNT - 1 && int(FilterWeights::Box) == 0);
 static_assert(int(CascadeStorage::Textures) == ST_STORAGE_COUNT - 1 && int(CascadeStorage::Array) == 0);
-static_assert(int(View::Side) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
+static_assert(int(View::TexelGrid) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
 
 // The code the shaders read for an enumerator (shaders/codes.h): its value, never remapped.
 template <class E>
@@ -214,6 +216,8 @@ struct OutputSettings {
     int width = 640;
     int height = 360;
     View view = View::Shaded;
+    int texelBlock = 8;      // texel-grid view: texels per side of a checker block (seed 003)
+    bool sideTexels = false; // side view: the maps' texels back-projected into the world (seed 003)
     bool operator==(const OutputSettings&) const = default;
 };
 

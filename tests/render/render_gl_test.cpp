@@ -130,11 +130,12 @@ TEST_F(RenderGLTest, EveryViewFilterAndFitRendersWithoutGLErrors) {
     const auto viewNames = enumNames<View>();
     // The views this test was written against; a new one must show up in the checks below (it
     // does, through viewNames) and in this count, once someone has looked at what it draws.
-    EXPECT_EQ(viewNames.size(), 5u) << "View gained or lost a value: review this test's coverage";
+    EXPECT_EQ(viewNames.size(), 6u) << "View gained or lost a value: review this test's coverage";
     Scene scene = makeBuiltinScene("yard");
     Renderer r(scene);
     Settings s;
     s.output = {96, 64, View::Shaded};
+    s.output.sideTexels = true;  // the side view with its texel points
     s.cascades.mapSize = 256;
     for (FilterKind f : {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN})
         for (FitMode fit : {FitMode::Cascade, FitMode::Scene, FitMode::Sphere}) {

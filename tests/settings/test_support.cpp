@@ -26,7 +26,7 @@ Settings everyFieldChanged() {
                 .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
                 .pcssMaxRadius = 12.0f};
     s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
-    s.output = {.width = 800, .height = 600, .view = View::Cascades};
+    s.output = {.width = 800, .height = 600, .view = View::Cascades, .texelBlock = 16, .sideTexels = true};
     s.path = {.frames = 12,
               .keyframes = {{.position = {0.0f, 2.0f, 5.0f}, .target = {0.0f, 1.0f, -5.0f}, .fovY = 50.0f},
                             {.position = {0.25f, 2.0f, 5.0f}, .target = {0.25f, 1.0f, -5.0f}, .fovY = 55.5f}}};

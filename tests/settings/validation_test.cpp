@@ -68,7 +68,7 @@ TEST(ValidationTest, InvalidEnumValue) {
     Settings s;
     s.output.view = static_cast<View>(9);
     EXPECT_TRUE(hasMessage(validate(s), "output.view: must be one of \"shaded\", \"cascades\", \"shadow\", "
-                                        "\"texel-density\", \"side\", got invalid value 9"));
+                                        "\"texel-density\", \"side\", \"texel-grid\", got invalid value 9"));
 }
 
 TEST(ValidationTest, CrossFieldRules) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <vector>
 
@@ -138,4 +140,44 @@ TEST(FieldRulesTest, FieldsOfOtherModesSayWhyTheyDoNotApply) {
     s.cascades.zExtension = ZExtension::Pancake;
     EXPECT_NE(notApplicableReason(*findField("cascades.zExtensionDistance"), s), "");
     EXPECT_EQ(notApplicableReason(*findField("light.elevation"), s), "");
+}
+
+// Every filter parameter applies exactly to the kinds whose shader reads it, storage fields to
+// their storage, view fields to their view.
+TEST(FieldRulesTest, FilterStorageAndViewFieldsApplyToTheirModesOnly) {
+    auto applies = [](const char* path, const Settings& s) { return notApplicableReason(*findField(path), s).empty(); };
+    Settings s;
+    const std::vector<std::pair<const char*, std::vector<FilterKind>>> uses{
+        {"filter.size", {FilterKind::PcfNxN, FilterKind::Pcss}},
+        {"filter.weights", {FilterKind::PcfNxN}},
+        {"filter.blurRadius", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}},
+        {"filter.bleedExponent", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}},
+        {"filter.minVariance", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4}},
+        {"filter.evsmPositive", {FilterKind::Evsm2, FilterKind::Evsm4}},
+        {"filter.evsmNegative", {FilterKind::Evsm4}},
+        {"filter.momentBias", {FilterKind::Msm}},
+        {"filter.pcssMaxRadius", {FilterKind::Pcss}},
+        {"filter.padding", {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN, FilterKind::Vsm, FilterKind::Evsm2,
+                            FilterKind::Evsm4, FilterKind::Msm, FilterKind::Pcss}}};
+    for (const auto& [path, kinds] : uses)
+        for (int k = 0; k < ST_FILTER_COUNT; ++k) {
+            s.filter.kind = FilterKind(k);
+            const bool used = std::find(kinds.begin(), kinds.end(), FilterKind(k)) != kinds.end();
+            EXPECT_EQ(applies(path, s), used) << path << " with " << EnumNames<FilterKind>::names[std::size_t(k)];
+        }
+    s.filter.kind = FilterKind::Vsm;
+    EXPECT_FALSE(applies("bias.receiverPlane", s));
+    s.filter.kind = FilterKind::Pcf2x2;
+    EXPECT_TRUE(applies("bias.receiverPlane", s));
+    EXPECT_FALSE(applies("cascades.atlasPadding", s));
+    EXPECT_FALSE(applies("cascades.mapSizes", s));
+    s.cascades.storage = CascadeStorage::Atlas;
+    EXPECT_TRUE(applies("cascades.atlasPadding", s));
+    EXPECT_TRUE(applies("cascades.mapSizes", s));
+    EXPECT_FALSE(applies("output.texelBlock", s));
+    s.output.view = View::TexelGrid;
+    EXPECT_TRUE(applies("output.texelBlock", s));
+    EXPECT_FALSE(applies("output.sideTexels", s));
+    s.output.view = View::Side;
+    EXPECT_TRUE(applies("output.sideTexels", s));
 }

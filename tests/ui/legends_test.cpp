@@ -52,6 +52,12 @@ TEST(LegendsTest, SceneShowsTheLegendOfItsDebugView) {
     EXPECT_LE(d.rect("legend.cascades").max.x, scene.x + d.last.sceneSize.x) << "inside the scene viewport";
     EXPECT_GT(d.rect("legend.cascades").max.y - d.rect("legend.cascades").min.y, 4 * ImGui::GetTextLineHeight())
         << "one line per cascade";
+    d.s.output.view = View::TexelGrid;
+    d.frames(2);
+    ASSERT_TRUE(d.drawn("legend.texelGrid"));
+    EXPECT_LE(d.rect("legend.texelGrid").max.x, scene.x + d.last.sceneSize.x);
+    EXPECT_GT(d.rect("legend.texelGrid").max.y - d.rect("legend.texelGrid").min.y, 5 * ImGui::GetTextLineHeight())
+        << "a title and one line per cascade";
     d.s.output.view = View::TexelDensity;
     d.frames(2);
     EXPECT_TRUE(d.drawn("legend.density"));
