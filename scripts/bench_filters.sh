@@ -3,13 +3,15 @@
 # 1280x720 with 4 cascades of 2048^2, measured in one `shadowtune measure` run, as ratios to the
 # hard 2x2 PCF of the same run. Columns: the shadow pass, the filter's own passes (moment maps and
 # their blur), the main pass (filtering included) in GPU ms (medians), all shadow memory (depth
-# array + the filter's maps), the nearest-test misclassification and the filtered error against
-# today's point-sun truth. (The soft truth of the sun's disc is added when it lands: issue 12 item 2.)
-#   scripts/bench_filters.sh [BUILD_DIR] [FRAMES]      needs jq; Truck Town needs ../shared/assets
+# array + the filter's maps), the nearest-test misclassification, the filtered error against the
+# point-sun truth and against the soft truth of the sun's disc (light.angularDiameter 0.53, the
+# real sun, RAYS rays per pixel: metrics/soft_accuracy.h), the last as a ratio to pcf2x2 too.
+#   scripts/bench_filters.sh [BUILD_DIR] [FRAMES] [RAYS]   needs jq; Truck Town needs ../shared/assets
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
 frames=${2:-5}
+rays=${3:-16}
 out=$(mktemp -d) && trap 'rm -rf "$out"' EXIT
 scenes=("$root/presets/default.json")
 if [[ -d $root/../shared/assets/truck_town ]]; then
@@ -33,27 +35,32 @@ filters=(
   'msm-r3-16|{"kind":"msm","blurRadius":3,"moments16":true}'
 )
 presets=()
+mkdir "$out/presets"
 for scene in "${scenes[@]}"; do
   stem=$(basename "$scene" .json)
   for f in "${filters[@]}"; do
     name=${f%%|*}
-    # Written beside the scene preset so its relative scene path still resolves; removed on exit.
-    p="$(dirname "$scene")/.bench-$stem-$name.json"
-    jq --argjson f "${f#*|}" '.filter = (.filter + $f) | .cascades.count = 4 | .cascades.mapSize = 2048
-      | .bias.receiverPlane = false | .path = {"frames": 0, "keyframes": []}' "$scene" >"$p"
+    # In the temporary folder, not beside the scene preset (a preset there would join the
+    # presets/*.json globs of a concurrent cmake run), so a relative scene path is made absolute.
+    p="$out/presets/$stem-$name.json"
+    jq --argjson f "${f#*|}" --argjson rays "$rays" --arg dir "$(dirname "$scene")" '.filter = (.filter + $f)
+      | .cascades.count = 4 | .cascades.mapSize = 2048 | .bias.receiverPlane = false
+      | .path = {"frames": 0, "keyframes": []} | .light.angularDiameter = 0.53 | .measure.sunRays = $rays
+      | .scene |= (if startswith("builtin:") or startswith("/") then . else $dir + "/" + . end)
+      | del(."$schema")' "$scene" >"$p"
     presets+=("$p")
   done
 done
-trap 'rm -rf "$out" "${presets[@]}"' EXIT
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); Mesa llvmpipe"
 "$build/shadowtune" measure "${presets[@]}" --out "$out" --size 1280x720 --frames "$frames" --no-flicker >"$out/log" 2>&1 ||
   { cat "$out/log" >&2; exit 1; }
 for scene in "${scenes[@]}"; do
   stem=$(basename "$scene" .json)
-  base="$out/.bench-$stem-pcf2x2/metrics.json"
+  base="$out/$stem-pcf2x2/metrics.json"
   echo
-  echo "$stem, 1280x720, 4x2048; ratios to pcf2x2 (absolute in brackets)"
-  printf '%-16s %16s %16s %16s %18s %14s %16s\n' filter "shadow ms" "filter ms" "main ms" "memory MiB" "misclass %" "filtered err"
+  echo "$stem, 1280x720, 4x2048; ratios to pcf2x2 (absolute in brackets); soft truth 0.53 deg, $rays rays"
+  printf '%-16s %16s %16s %16s %18s %11s %10s %18s\n' filter "shadow ms" "filter ms" "main ms" "memory MiB" \
+    "misclass %" "point err" "soft err"
   for f in "${filters[@]}"; do
     name=${f%%|*}
     jq -r --arg name "$name" --slurpfile b "$base" '
@@ -66,8 +73,10 @@ for scene in "${scenes[@]}"; do
        ratio($c.shadowMapBytes + $c.filterMapBytes; $k.shadowMapBytes + $k.filterMapBytes) + " ("
          + (($c.shadowMapBytes + $c.filterMapBytes) / 1048576 | round | tostring) + ")",
        (.accuracy.misclassified * 1000 | round / 10 | tostring),
-       (.accuracy.filteredError * 10000 | round / 10000 | tostring)]
-      | "\(.[0])|\(.[1])|\(.[2])|\(.[3])|\(.[4])|\(.[5])|\(.[6])"' "$out/.bench-$stem-$name/metrics.json" |
-      awk -F'|' '{printf "%-16s %16s %16s %16s %18s %14s %16s\n", $1, $2, $3, $4, $5, $6, $7}'
+       (.accuracy.filteredError * 10000 | round / 10000 | tostring),
+       ratio(.soft.filteredError; $b[0].soft.filteredError) + " ("
+         + (.soft.filteredError * 10000 | round / 10000 | tostring) + ")"]
+      | "\(.[0])|\(.[1])|\(.[2])|\(.[3])|\(.[4])|\(.[5])|\(.[6])|\(.[7])"' "$out/$stem-$name/metrics.json" |
+      awk -F'|' '{printf "%-16s %16s %16s %16s %18s %11s %10s %18s\n", $1, $2, $3, $4, $5, $6, $7, $8}'
   done
 done

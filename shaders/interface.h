@@ -104,6 +104,7 @@
     M(int, cascadePad2)                                                                           \
     M(int, cascadePad3)                                                                           \
     A(vec4, pcfWeights, 3) /* 1-D tap weights of the NxN filter, [k/4][k%4] for tap k - size/2 */ \
+    A(vec4, blurWeights, 5) /* moment blur: weight of taps +-k, [k/4][k%4], k = 0..blurRadius */  \
     A(CascadeData, cascade, ST_MAX_CASCADES)
 
 // Per draw: the material of the draw item.

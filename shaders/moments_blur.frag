@@ -11,6 +11,6 @@ void main() {
     int last = textureSize(uScratch, 0).y - 1;
     vec4 sum = vec4(0.0);
     for (int k = -blurRadius; k <= blurRadius; ++k)
-        sum += blurWeight(k, blurRadius) * texelFetch(uScratch, ivec2(p.x, clamp(p.y + k, 0, last)), 0);
+        sum += blurWeight(k) * texelFetch(uScratch, ivec2(p.x, clamp(p.y + k, 0, last)), 0);
     oMoments = (filterKind == ST_FILTER_MSM && moments16 != 0) ? msmQuantise(sum) : sum;
 }

@@ -13,7 +13,7 @@ void main() {
     vec4 sum = vec4(0.0);
     for (int k = -blurRadius; k <= blurRadius; ++k) {
         float z = texelFetch(uDepthRaw, ivec3(clamp(p.x + k, 0, last), p.y, layer), 0).r;
-        sum += blurWeight(k, blurRadius) * momentsOf(filterKind, z, exponents);
+        sum += blurWeight(k) * momentsOf(filterKind, z, exponents);
     }
     oMoments = sum;
 }

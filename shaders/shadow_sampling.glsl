@@ -49,9 +49,14 @@ int selectInterval(float vsDepth) {
     return -1;
 }
 
-// The filter's reach in cascade i's texture, uv: (taps radius + 1) texels of its own size.
+// Everything the filter reads around a point in cascade i's texture, uv, in texels of its own
+// size (renderer/csm/selection.h, filterPaddingTexels): NxN PCF's taps radius + 1, PCSS's capped
+// radius + 1, a moment filter's blur radius + 1, else the bilinear texel.
 vec2 edgeMargin(int i) {
-    float radius = filterKind == ST_FILTER_PCF_NXN ? float(filterSize / 2) + 1.0 : 1.0;
+    float radius = 1.0;
+    if (filterKind == ST_FILTER_PCF_NXN) radius = float(filterSize / 2) + 1.0;
+    else if (filterKind == ST_FILTER_PCSS) radius = ceil(pcssMaxRadius) + 1.0;
+    else if (filterKind >= ST_FILTER_VSM && filterKind <= ST_FILTER_MSM) radius = float(blurRadius) + 1.0;
     return radius * cascade[i].uvPerTexel.xy;
 }
 

@@ -24,4 +24,17 @@ std::array<float, kMaxFilterTaps> pcfWeights(FilterWeights weights, int size) {
     return w;
 }
 
+
+std::array<float, kMaxBlurRadius + 1> blurWeights(int radius) {
+    if (radius < 0 || radius > kMaxBlurRadius)
+        fail("filter.blurRadius must be in 0.." + str(kMaxBlurRadius) + ", got " + str(radius));
+    std::array<float, kMaxBlurRadius + 1> w{};
+    const double sigma = 0.5 * double(radius + 1);
+    double sum = 0.0;
+    for (int k = -radius; k <= radius; ++k) sum += std::exp(-double(k * k) / (2.0 * sigma * sigma));
+    for (int k = 0; k <= radius; ++k)
+        w[static_cast<std::size_t>(k)] = static_cast<float>(std::exp(-double(k * k) / (2.0 * sigma * sigma)) / sum);
+    return w;
+}
+
 }  // namespace st::csm

@@ -19,4 +19,12 @@ std::array<float, kMaxFilterTaps> pcfWeights(FilterWeights weights, int size);
 // sigma of the Gaussian weights for `size` taps, texels.
 float pcfGaussianSigma(int size);
 
+inline constexpr int kMaxBlurRadius = 16;  // filter.blurRadius's maximum
+
+// The moment blur's 1-D Gaussian (renderer/render/moment_maps.h): taps -r..r with the PCF rule
+// sigma = (r + 1) / 2 texels, normalised over the 2r + 1 taps. Symmetric, so only |k| = 0..r is
+// kept (index |k|, the rest 0): the shaders fetch one weight per tap instead of recomputing the
+// Gaussian and its sum at every tap (CascadeBlock::blurWeights).
+std::array<float, kMaxBlurRadius + 1> blurWeights(int radius);
+
 }  // namespace st::csm

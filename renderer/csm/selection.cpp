@@ -27,13 +27,9 @@ int filterPaddingTexels(const FilterSettings& f) {
     return filterReachTexels(f.kind, f.size);
 }
 
-float mapEdgeMarginTexels(FilterKind filter, int filterSize) {
-    return float(filterReachTexels(filter, filterSize));
-}
+float mapEdgeMarginTexels(const FilterSettings& filter) { return float(filterPaddingTexels(filter)); }
 
-float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize) {
-    return mapEdgeMarginTexels(filter, filterSize) / float(mapSize);
-}
+float mapEdgeMargin(const FilterSettings& filter, int mapSize) { return mapEdgeMarginTexels(filter) / float(mapSize); }
 
 namespace {
 // The first cascade i with its coordinates inside [margin(i), 1 - margin(i)] in x, y and [0, 1] in z.

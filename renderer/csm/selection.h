@@ -18,15 +18,19 @@ namespace st::csm {
 // split, or NaN, gives -1 (beyond the shadow distance: lit). Throws if splits has < 2 values.
 int selectCascadeInterval(std::span<const float> splits, float vsDepth);
 
-// The texture-space border map-based selection leaves out so the filter's taps stay inside the
-// tile: (taps radius + 1 texel) / mapSize for NxN PCF, 1 texel otherwise (shader edgeMargin()).
-float mapEdgeMargin(FilterKind filter, int filterSize, int mapSize);
-// The same margin in texels: taps radius + 1 for NxN PCF, 1 otherwise.
-float mapEdgeMarginTexels(FilterKind filter, int filterSize);
-// That border in texels: how far the filter's taps reach from the texel a point falls in.
+// The texture-space border map-based selection leaves out so everything the filter reads stays
+// inside the tile: filterPaddingTexels(filter) / mapSize (shader edgeMargin()). Past it a pixel
+// takes the next map, which holds its whole kernel, rather than filter the map's clamped rim.
+float mapEdgeMargin(const FilterSettings& filter, int mapSize);
+// The same margin in texels.
+float mapEdgeMarginTexels(const FilterSettings& filter);
+// How far a PCF kernel's taps reach from the texel a point falls in: taps radius + 1 for NxN
+// PCF, 1 (the bilinear footprint) for hard and 2x2.
 int filterReachTexels(FilterKind filter, int filterSize);
-// The padding filter.padding adds around each light box (seed 004, "Padding for PCF Kernels"): the
-// reach above, PCSS's capped radius + 1, or a moment filter's blur radius + 1.
+// Everything the filter reads around a point, texels: the PCF reach above, PCSS's capped radius
+// + 1 (blocker search and kernel), or a moment filter's blur radius + 1 (the blur gathered the
+// texel's moments from that far). Also the padding filter.padding adds around each light box
+// (seed 004, "Padding for PCF Kernels").
 int filterPaddingTexels(const FilterSettings& filter);
 
 // Map-based (seed 003/004): the first cascade whose shadow texture coordinates x,y lie inside

@@ -60,6 +60,8 @@ gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& pla
     copyShaderFields(s, b);
     const auto w = csm::pcfWeights(s.filter.weights, s.filter.size);
     for (std::size_t k = 0; k < w.size(); ++k) b.pcfWeights[k / 4][static_cast<int>(k % 4)] = w[k];
+    const auto blur = csm::blurWeights(s.filter.blurRadius);
+    for (std::size_t k = 0; k < blur.size(); ++k) b.blurWeights[k / 4][static_cast<int>(k % 4)] = blur[k];
     b.evsmPosExp = evsmExponent(s.filter.evsmPositive, s.filter.moments16);
     b.evsmNegExp = evsmExponent(s.filter.evsmNegative, s.filter.moments16);
     b.sunTan = std::tan(glm::radians(s.light.angularDiameter));

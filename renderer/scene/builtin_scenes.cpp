@@ -94,10 +94,35 @@ Scene makeWall() {
     return s;
 }
 
+// Two stacked casters over the ground (presets/scenarios/vsm-bleeding-*): a low slab 1.5 m up
+// and 12.5 m above it, along a sun at azimuth 0 and elevation 25, slats that cover half of the
+// slab in the light's view. On the ground in the slab's shadow a filter window holds two
+// blocker depths, slats and slab, far apart compared to the slab's height over the ground: the
+// variance of the mixed window makes Chebyshev's bound read light where the truth is umbra
+// (seed 004, "Light Bleeding"). The slats reach the slab's footprint in the light's view at
+// x + (14 - 1.5) / tan(25 deg) = x + 26.8.
+Scene makeStackedSlabs() {
+    Scene s;
+    int ground = addMaterial(s, {0.8f, 0.8f, 0.8f});
+    int stone = addMaterial(s, {0.75f, 0.72f, 0.68f});
+    int wood = addMaterial(s, {0.6f, 0.42f, 0.28f});
+    addGroundQuad(s, 40.0f, 0.0f, ground);
+    addBox(s, {-2.0f, 1.5f, -3.0f}, {2.0f, 1.7f, 3.0f}, stone);
+    // 0.5 m slats every 1 m, 5 cm thick: across the light at 25 deg each covers 0.5 sin 25 +
+    // 0.05 cos 25 = 0.26 m and leaves a 0.17 m gap (a thicker slat would close the gaps).
+    for (int i = 0; i < 5; ++i) {
+        const float x = 24.8f + static_cast<float>(i);
+        addBox(s, {x, 14.0f, -3.5f}, {x + 0.5f, 14.05f, 3.5f}, wood);
+    }
+    finalizeBounds(s);
+    return s;
+}
+
 const std::map<std::string, std::function<Scene()>>& builtins() {
     static const std::map<std::string, std::function<Scene()>> table = {
         {"yard", makeYard},           {"box-over-plane", makeBoxOverPlane}, {"empty", makeEmpty},
-        {"tower-outside", makeTowerOutside}, {"pergola", makePergola},     {"wall", makeWall}};
+        {"tower-outside", makeTowerOutside}, {"pergola", makePergola},     {"wall", makeWall},
+        {"stacked-slabs", makeStackedSlabs}};
     return table;
 }
 }  // namespace

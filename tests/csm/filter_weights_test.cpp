@@ -44,6 +44,27 @@ TEST(FilterWeightsTest, RejectsEvenAndOutOfRangeSizes) {
     EXPECT_THROW(pcfWeights(FilterWeights::Gaussian, 0), std::invalid_argument);
 }
 
+// The moment blur's half kernel: taps -r..r sum to 1, the ratio of neighbours follows sigma =
+// (r + 1) / 2, and it equals the odd PCF Gaussian of 2r + 1 taps where both exist (r <= 4).
+TEST(FilterWeightsTest, BlurWeightsAreTheNormalisedHalfGaussian) {
+    for (int r = 0; r <= kMaxBlurRadius; ++r) {
+        const auto w = blurWeights(r);
+        double total = w[0];
+        for (int k = 1; k <= r; ++k) total += 2.0 * w[std::size_t(k)];
+        EXPECT_NEAR(total, 1.0, 1e-6) << "radius " << r;
+        for (int k = r + 1; k <= kMaxBlurRadius; ++k) EXPECT_EQ(w[std::size_t(k)], 0.0f) << "radius " << r;
+        const double sigma = 0.5 * (r + 1);
+        if (r > 0) EXPECT_NEAR(w[1] / w[0], std::exp(-1.0 / (2.0 * sigma * sigma)), 1e-6) << "radius " << r;
+        if (2 * r + 1 <= kMaxFilterTaps) {
+            const auto pcf = pcfWeights(FilterWeights::Gaussian, 2 * r + 1);
+            for (int k = 0; k <= r; ++k) EXPECT_NEAR(w[std::size_t(k)], pcf[std::size_t(r + k)], 1e-7) << r << " " << k;
+        }
+    }
+    EXPECT_EQ(blurWeights(0)[0], 1.0f);
+    EXPECT_THROW(blurWeights(-1), std::invalid_argument);
+    EXPECT_THROW(blurWeights(kMaxBlurRadius + 1), std::invalid_argument);
+}
+
 // Seed 004's PCF padding: the padded box holds the unpadded one exactly padTexels of its own
 // texels in from each x,y side, and depth is untouched.
 TEST(FilterWeightsTest, PaddingKeepsTheSliceThatManyTexelsFromTheRim) {

@@ -33,11 +33,30 @@ TEST(SelectionTest, IntervalAtBoundariesAndOutside) {
     EXPECT_THROW(selectCascadeInterval(std::vector<float>{1.0f}, 1.0f), std::invalid_argument);
 }
 
+FilterSettings filter(FilterKind kind, int size = 3) {
+    FilterSettings f;
+    f.kind = kind;
+    f.size = size;
+    return f;
+}
+
 TEST(SelectionTest, EdgeMarginIsTheFilterRadiusPlusOneTexel) {
-    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::Hard, 5, 1024), 1.0f / 1024.0f);
-    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::Pcf2x2, 5, 512), 1.0f / 512.0f);
-    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::PcfNxN, 5, 1024), 3.0f / 1024.0f);  // 2 taps + 1
-    EXPECT_FLOAT_EQ(mapEdgeMargin(FilterKind::PcfNxN, 3, 256), 2.0f / 256.0f);
+    EXPECT_FLOAT_EQ(mapEdgeMargin(filter(FilterKind::Hard, 5), 1024), 1.0f / 1024.0f);
+    EXPECT_FLOAT_EQ(mapEdgeMargin(filter(FilterKind::Pcf2x2, 5), 512), 1.0f / 512.0f);
+    EXPECT_FLOAT_EQ(mapEdgeMargin(filter(FilterKind::PcfNxN, 5), 1024), 3.0f / 1024.0f);  // 2 taps + 1
+    EXPECT_FLOAT_EQ(mapEdgeMargin(filter(FilterKind::PcfNxN, 3), 256), 2.0f / 256.0f);
+    // PCSS: its kernel and blocker search reach up to the capped radius (7.5 -> 8), + 1.
+    FilterSettings pcss = filter(FilterKind::Pcss, 5);
+    pcss.pcssMaxRadius = 7.5f;
+    EXPECT_FLOAT_EQ(mapEdgeMarginTexels(pcss), 9.0f);
+    // Moment filters: the blur gathered each texel's moments from blurRadius texels, + 1.
+    for (FilterKind k : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}) {
+        FilterSettings m = filter(k);
+        m.blurRadius = 4;
+        EXPECT_FLOAT_EQ(mapEdgeMarginTexels(m), 5.0f) << int(k);
+        m.blurRadius = 0;
+        EXPECT_FLOAT_EQ(mapEdgeMarginTexels(m), 1.0f) << int(k);
+    }
 }
 
 struct Fitted {
@@ -98,6 +117,41 @@ TEST(SelectionTest, MapMarginExcludesTheBorder) {
                                                glm::vec3(1e-3f, 0, 0)),
               0);
     EXPECT_EQ(selectCascadeMap(only0, ws, 0.01f), -1);
+}
+
+// A point 4 texels inside cascade 0's tile, on a side where cascade 1 holds it too: 2x2 PCF
+// (margin 1) and a 3-texel blur (margin 4, the kernel just inside) keep cascade 0; PCSS capped at 8
+// texels and a 5-texel blur would read past the tile, so the next map is picked.
+TEST(SelectionTest, MapSelectionTakesTheNextMapWhereTheKernelReachesOutOfTheTile) {
+    const Fitted f = fitted(FitMode::Sphere);
+    const CascadeFit& c0 = f.fits[0];
+    const glm::mat3 wsFromLs = glm::transpose(glm::mat3(c0.lsView));
+    const float inset = 4.01f * c0.texelWorldSize;
+    glm::vec3 ws{};
+    bool found = false;
+    for (const glm::vec2 side : {glm::vec2(-1, 0), glm::vec2(1, 0), glm::vec2(0, -1), glm::vec2(0, 1)}) {
+        const glm::vec3 c = c0.lsBox.center(), h = 0.5f * c0.lsBox.extent();
+        const glm::vec3 ls(c.x + side.x * (h.x - inset), c.y + side.y * (h.y - inset), c.z);
+        ws = wsFromLs * ls;
+        const std::vector<CascadeFit> only1 = {f.fits[1]};
+        if (selectCascadeMapPerSize(only1, ws, 40.0f) == 0) {  // well inside cascade 1
+            found = true;
+            break;
+        }
+    }
+    ASSERT_TRUE(found) << "cascade 1 should hold some side of cascade 0";
+    auto pick = [&](const FilterSettings& fs) { return selectCascadeMapPerSize(f.fits, ws, mapEdgeMarginTexels(fs)); };
+    EXPECT_EQ(pick(filter(FilterKind::Pcf2x2)), 0);
+    FilterSettings pcss = filter(FilterKind::Pcss);
+    pcss.pcssMaxRadius = 8.0f;
+    EXPECT_EQ(pick(pcss), 1);
+    pcss.pcssMaxRadius = 2.0f;
+    EXPECT_EQ(pick(pcss), 0);
+    FilterSettings vsm = filter(FilterKind::Vsm);
+    vsm.blurRadius = 3;
+    EXPECT_EQ(pick(vsm), 0);
+    vsm.blurRadius = 5;
+    EXPECT_EQ(pick(vsm), 1);
 }
 
 TEST(SelectionTest, MapNormalOffsetIsScaledByEachCascadesTexel) {

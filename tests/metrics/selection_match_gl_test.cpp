@@ -63,7 +63,7 @@ protected:
         auto& e = session_.entryFor(s, ST_PRESET_DIR);
         const MeasureSamples m = metrics::sampleFrame(*e.renderer, session_.pass(), s, s);
         const csm::CascadePlan& plan = e.renderer->plan();
-        const float margin = csm::mapEdgeMarginTexels(s.filter.kind, s.filter.size);
+        const float margin = csm::mapEdgeMarginTexels(s.filter);
         Match r;
         for (std::size_t i = 0; i < m.size(); ++i) {
             if (!m.covered(i)) continue;
@@ -109,6 +109,13 @@ TEST_F(SelectionMatchGLTest, MapSelectionIsTheShadersWithMarginAndNormalOffset) 
     s.filter.kind = FilterKind::PcfNxN;  // a wider margin ...
     s.filter.size = 7;
     s.bias.normalOffset = 1.5f;          // ... and each cascade moves the point by its own texel
+    expectMatch(s);
+    s.bias.normalOffset = 0.0f;
+    s.filter.kind = FilterKind::Pcss;    // PCSS's capped kernel: a margin of 13 texels
+    s.filter.pcssMaxRadius = 12.0f;
+    expectMatch(s);
+    s.filter.kind = FilterKind::Vsm;     // the moment blur's reach: 7 texels
+    s.filter.blurRadius = 6;
     expectMatch(s);
 }
 

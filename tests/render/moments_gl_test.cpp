@@ -3,6 +3,7 @@
 // solve on known moments, EVSM with small exponents reads like VSM, and the costs are reported.
 #include "renderer/render/moment_maps.h"
 #include "renderer/render/shader_library.h"
+#include "renderer/render/shadow_map_view.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/enum_names.h"
 #include "tests/render/render_test_util.h"
@@ -256,4 +257,61 @@ TEST_F(MomentsGLTest, MsmReconstructionMatchesTheCpuReference) {
     // Known answers: in front of every atom nothing occludes; behind all of them nearly all does.
     EXPECT_NEAR(out[0], 0.0, 1e-6);
     EXPECT_GT(out[std::size_t(n - 2) * 4], 0.7);
+}
+
+// The shadow-map viewer's moment tiles (issue 12: "first moment as depth, variance as a second
+// image"): with a tile as large as the map, tile pixel (x, y) shows texel (x, y). Its expected
+// colours come from the depth layer alone, blurred on the CPU (blurRows): the mean tile the grey
+// ramp of the blurred depth over the tile's range (depth_view.frag's ramp), the spread tile
+// 16 sqrt(E z^2 - (E z)^2) / span as yellow. VSM and MSM store E z and E z^2 directly.
+TEST_F(MomentsGLTest, ViewerMomentTilesShowTheMeanAndTheSpreadOfTheDepths) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Msm}) {
+        SCOPED_TRACE(enumName(kind));
+        Settings s = boxSettings(kind);
+        s.filter.blurRadius = 2;
+        r.render(s);
+        const int n = 256, layer = 0;
+        ShadowMapView view;
+        view.update(r.shadowMaps(), n, &r.momentMaps());
+        ASSERT_NE(view.varianceTexture(layer), 0u);
+        const auto depth = readLayer(r.shadowMapTexture(), GL_DEPTH_COMPONENT, 1, n, layer);
+        std::vector<double> z(depth.begin(), depth.end()), z2(depth.size());
+        for (std::size_t i = 0; i < z.size(); ++i) z2[i] = z[i] * z[i];
+        const auto m1 = blurRows(blurRows(z, n, 2, true), n, 2, false);
+        const auto m2 = blurRows(blurRows(z2, n, 2, true), n, 2, false);
+        std::vector<std::uint8_t> mean(std::size_t(n) * n * 4), spread(mean.size());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTextureImage(view.layerTexture(layer), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(mean.size()), mean.data());
+        glGetTextureImage(view.varianceTexture(layer), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(spread.size()),
+                          spread.data());
+        const auto [lo, hi] = view.depthRange(layer);
+        const double span = std::max(double(hi) - double(lo), 1e-6);
+        int worstMean = 0, worstSpread = 0, spreadTexels = 0;
+        for (std::size_t i = 0; i < z.size(); ++i) {
+            if (m1[i] >= 0.9999) continue;  // never written: the blue of depth_view.frag
+            const double v = 1.0 - std::clamp((m1[i] - lo) / span, 0.0, 1.0);
+            worstMean = std::max(worstMean, std::abs(int(mean[4 * i]) - int(std::lround(255.0 * (0.15 + 0.85 * v)))));
+            const double sd = std::sqrt(std::max(m2[i] - m1[i] * m1[i], 0.0));
+            const double y = std::clamp(16.0 * sd / span, 0.0, 1.0);
+            // Where the variance is a float rounding of E z^2 - (E z)^2 (flat texels), 2 levels.
+            worstSpread = std::max(worstSpread, std::abs(int(spread[4 * i]) - int(std::lround(255.0 * y))));
+            spreadTexels += spread[4 * i] > 100;
+        }
+        EXPECT_LE(worstMean, 2) << "mean tile: grey levels from the CPU's blurred depth";
+        EXPECT_LE(worstSpread, 3) << "spread tile: levels from the CPU's blurred depth";
+        EXPECT_GT(spreadTexels, 50) << "the box's outline: two depths in the blur, a bright spread";
+        std::printf("[ figures  ] %s tiles: worst mean %d, spread %d levels; %d texels of bright spread\n",
+                    enumName(kind).data(), worstMean, worstSpread, spreadTexels);
+        // No blur: each texel holds one depth, z^2 - z^2 = 0, and the spread tile is black.
+        s.filter.blurRadius = 0;
+        r.render(s);
+        view.update(r.shadowMaps(), n, &r.momentMaps());
+        glGetTextureImage(view.varianceTexture(layer), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(spread.size()),
+                          spread.data());
+        int lit = 0;
+        for (std::size_t i = 0; i < spread.size(); i += 4) lit += spread[i] != 0;
+        EXPECT_EQ(lit, 0) << "no spread without a blur";
+    }
 }
