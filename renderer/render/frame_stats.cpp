@@ -29,6 +29,7 @@ std::string toJsonText(const FrameStats& s) {
     j["gpuShadowMs"] = s.gpuShadowMs;
     j["gpuFilterMs"] = s.gpuFilterMs;
     j["gpuScreenShadowMs"] = s.gpuScreenShadowMs;
+    j["gpuScreenBlurMs"] = s.gpuScreenBlurMs;
     j["gpuMainMs"] = s.gpuMainMs;
     j["gpuDepthBoundsMs"] = s.gpuDepthBoundsMs;
     j["cpuMs"] = s.cpuMs;

@@ -55,6 +55,7 @@ struct FrameStats {
     double gpuShadowMs = 0.0;  // all cascades
     double gpuFilterMs = 0.0;  // the filter's extra passes (moment maps and their blur; the screen-space path)
     double gpuScreenShadowMs = 0.0;  // filter.screenSpace: mask, downsample, blurs, upsample (part of gpuFilterMs)
+    double gpuScreenBlurMs = 0.0;    // of which the downsample, blurs and upsample (the rest: the mask pass)
     double gpuMainMs = 0.0;
     double gpuDepthBoundsMs = 0.0;  // depth prepass and reduction (0 without them)
     double cpuMs = 0.0;        // CPU time to plan and submit the frame

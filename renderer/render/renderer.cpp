@@ -79,6 +79,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     if (moments) stats.gpuFilterMs = timers_.milliseconds(filterTimer);
     if (screen) {
         stats.gpuScreenShadowMs = timers_.milliseconds(screenTimer);
+        stats.gpuScreenBlurMs = screen_->blurMs();
         stats.gpuFilterMs += stats.gpuScreenShadowMs;
     }
     return stats;

@@ -84,6 +84,8 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
     gpu::DebugGroup group("screen-space shadow");
     const FilterSettings& f = s.filter;
     ensure(width, height, f.screenDownsample);
+    timers_.beginFrame(2);
+    timers_.begin(0);
     {
         gpu::DebugGroup maskGroup("mask");
         gpu::applyPassState(gpu::opaqueScenePass(maskFbo_.id(), width_, height_));
@@ -98,6 +100,8 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
         view_.bind(ST_BLOCK_VIEW);
         drawScene();
     }
+    timers_.end(0);
+    timers_.begin(1);
     gpu_if::ScreenBlock b;
     const auto w = screenBlurWeights(f.screenBlurRadius);
     for (std::size_t k = 0; k < w.size(); ++k) b.screenWeights[k / 4][int(k % 4)] = w[k];
@@ -118,6 +122,7 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
     fullscreen(low_[0].id(), lw, lh, low_[1].id(), blurProgram_);
     glBindTextureUnit(ST_BINDING_SCREEN_FULL, mask_.id());
     fullscreen(result_.id(), width_, height_, low_[0].id(), upProgram_);
+    timers_.end(1);
     glNamedFramebufferTexture(passFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
     glBindTextureUnit(ST_BINDING_SCREEN_SOURCE, 0);
     glBindTextureUnit(ST_BINDING_SCREEN_FULL, 0);

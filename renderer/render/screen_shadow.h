@@ -8,6 +8,7 @@
 // a near occluder's shadow does not bleed onto the background across a silhouette.
 #include "renderer/gpu/gl.h"
 #include "renderer/gpu/uniform_buffer.h"
+#include "renderer/render/gpu_timer.h"
 #include "renderer/settings/settings.h"
 #include "shaders/interface.h"
 
@@ -52,6 +53,10 @@ public:
     int height() const { return height_; }
     int downsample() const { return n_; }
     std::size_t bytes() const { return width_ > 0 ? screenShadowBytes(width_, height_, n_) : 0; }
+    // GPU time of the last build(): the mask pass (a scene draw that filters the maps), and the
+    // downsample, both blurs and the upsample. Waits for the results.
+    double maskMs() const { return timers_.milliseconds(0); }
+    double blurMs() const { return timers_.milliseconds(1); }
 
 private:
     void ensure(int width, int height, int n);
@@ -69,6 +74,7 @@ private:
     gpu::Texture result_;
     gpu::UniformBuffer<gpu_if::ScreenBlock> block_;
     gpu::UniformBuffer<gpu_if::ViewBlock> view_;
+    GpuTimers timers_;
     int width_ = 0;
     int height_ = 0;
     int n_ = 0;

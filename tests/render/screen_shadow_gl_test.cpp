@@ -343,6 +343,8 @@ TEST_F(ScreenShadowGLTest, EveryShippedPresetRendersWithThePathOn) {
         EXPECT_GE(stats.filterMapBytes, stats.screenShadowBytes);
         EXPECT_GT(stats.gpuScreenShadowMs, 0.0);
         EXPECT_GE(stats.gpuFilterMs, stats.gpuScreenShadowMs);
+        EXPECT_GT(stats.gpuScreenBlurMs, 0.0);
+        EXPECT_LT(stats.gpuScreenBlurMs, stats.gpuScreenShadowMs);
         if (preset.stem() == "default") {
             for (View v : {View::Shaded, View::Cascades, View::TexelDensity, View::Side}) {
                 s.output.view = v;
