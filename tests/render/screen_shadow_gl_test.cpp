@@ -331,8 +331,8 @@ TEST_F(ScreenShadowGLTest, EveryShippedPresetRendersWithThePathOn) {
         s.filter.screenDownsample = preset.stem().string().size() % 2 ? 2 : 4;
         s.output.width = 160;
         s.output.height = 90;
-        s.cascades.mapSize = std::min(s.cascades.mapSize, 512);
-        for (int& size : s.cascades.mapSizes) size = std::min(size, 512);
+        s.cascades.mapSize = std::min(s.cascades.mapSize, 256);
+        for (int& size : s.cascades.mapSizes) size = std::min(size, 256);
         s.path.frames = 0;
         s.path.keyframes.clear();
         Scene scene = loadScene(s.scene, preset.parent_path(), SceneOptions{.ground = s.ground});
