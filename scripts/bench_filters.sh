@@ -33,6 +33,7 @@ filters=(
   'evsm4-r3-16|{"kind":"evsm4","blurRadius":3,"moments16":true}'
   'msm-r3|{"kind":"msm","blurRadius":3}'
   'msm-r3-16|{"kind":"msm","blurRadius":3,"moments16":true}'
+  'screen-hard-r4|{"kind":"hard","screenSpace":"blur","screenDownsample":2,"screenBlurRadius":4}'
 )
 presets=()
 mkdir "$out/presets"

@@ -54,6 +54,12 @@
 #define ST_WEIGHTS_GAUSSIAN 1
 #define ST_WEIGHTS_COUNT 2
 
+// ScreenSpace: seed 001's screen-space path (renderer/render/screen_shadow.h): the filter's
+// factor drawn into a mask at full resolution, downsampled, blurred, upsampled, read by the main pass
+#define ST_SCREEN_OFF 0
+#define ST_SCREEN_BLUR 1
+#define ST_SCREEN_COUNT 2
+
 // CascadeStorage: one depth array layer per cascade; one atlas texture with a tile per cascade
 // (seed 003); one texture per cascade (seed 002)
 #define ST_STORAGE_ARRAY 0

@@ -23,6 +23,7 @@
 #define ST_BLOCK_MATERIAL 3
 #define ST_BLOCK_OVERLAY 4
 #define ST_BLOCK_REDUCE 5
+#define ST_BLOCK_SCREEN 6    // the screen-space path's blur (renderer/render/screen_shadow.cpp)
 
 // Texture units.
 #define ST_BINDING_SHADOW_NEAREST 0  // depth array with hardware compare, nearest: hard shadows
@@ -43,6 +44,11 @@
 // Storage "array" and "atlas": the depth texture without compare, PCSS's blocker search (after
 // the ST_MAX_CASCADES units of ST_BINDING_CASCADE_MAPS).
 #define ST_BINDING_SHADOW_RAW 16
+// The screen-space path (filter.screenSpace, renderer/render/screen_shadow.h): the upsampled mask
+// the main and measurement passes read, and the inputs of its fullscreen passes.
+#define ST_BINDING_SCREEN_SHADOW 17  // R32F, full size: the factor the image shows
+#define ST_BINDING_SCREEN_SOURCE 18  // RG32F: x factor, y view depth (0: no surface)
+#define ST_BINDING_SCREEN_FULL 19    // RG32F, the full-size mask: its depths guide the upsample
 
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws
@@ -60,7 +66,12 @@
     M(int, texelBlock) /* texel-grid view: texels per checker block */
 
 // Per pass (and per cascade in the shadow pass): what the draws are seen through.
-#define ST_VIEW_BLOCK(M, A) M(mat4, viewProj) /* ws -> clip of this pass */
+#define ST_VIEW_BLOCK(M, A)                                                                       \
+    M(mat4, viewProj)      /* ws -> clip of this pass */                                          \
+    M(int, screenShadow)   /* bool: read the factor from the screen-space mask, not the maps */   \
+    M(int, viewPad0)                                                                              \
+    M(int, viewPad1)                                                                              \
+    M(int, viewPad2)
 
 // One cascade's values, an element of CascadeBlock::cascade.
 #define ST_CASCADE_DATA(M, A)                                                                     \
@@ -137,6 +148,14 @@
     M(int, reduceWidth)     /* depth texture size, texels */                                      \
     M(int, reduceHeight)
 
+// The screen-space path's passes (seed 001: downsample, horizontal blur, vertical blur, upsample).
+#define ST_SCREEN_BLOCK(M, A)                                                                     \
+    A(vec4, screenWeights, 5) /* 1-D Gaussian weights of taps 0..radius, [k/4][k%4], sum(-r..r) 1 */\
+    M(int, screenRadius)      /* taps each side */                                                \
+    M(int, screenAxis)        /* 0: blur along x, 1: along y */                                   \
+    M(int, screenDownsample)  /* N: the blurred mask is 1/N of the full size */                   \
+    M(float, screenDepthSigma) /* depth-aware weight, fraction of the view depth; 0 = off */
+
 #ifdef __cplusplus
 // ---------------------------------------------------------------------------------------------
 #include <glm/mat4x4.hpp>
@@ -162,6 +181,7 @@ struct alignas(16) CascadeBlock { ST_CASCADE_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) 
 struct alignas(16) MaterialBlock { ST_MATERIAL_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 struct alignas(16) OverlayBlock { ST_OVERLAY_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 struct alignas(16) ReduceBlock { ST_REDUCE_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
+struct alignas(16) ScreenBlock { ST_SCREEN_BLOCK(ST_CPP_MEMBER, ST_CPP_ARRAY) };
 #undef ST_CPP_MEMBER
 #undef ST_CPP_ARRAY
 
@@ -202,6 +222,7 @@ ST_BLOCK_MEMBERS(CascadeBlock, ST_CASCADE_BLOCK)
 ST_BLOCK_MEMBERS(MaterialBlock, ST_MATERIAL_BLOCK)
 ST_BLOCK_MEMBERS(OverlayBlock, ST_OVERLAY_BLOCK)
 ST_BLOCK_MEMBERS(ReduceBlock, ST_REDUCE_BLOCK)
+ST_BLOCK_MEMBERS(ScreenBlock, ST_SCREEN_BLOCK)
 #undef ST_BLOCK_MEMBERS
 #undef ST_INFO_M
 #undef ST_INFO_A
@@ -219,6 +240,7 @@ layout(std140, binding = ST_BLOCK_CASCADES) uniform CascadeBlock { ST_CASCADE_BL
 layout(std140, binding = ST_BLOCK_MATERIAL) uniform MaterialBlock { ST_MATERIAL_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
 layout(std140, binding = ST_BLOCK_OVERLAY) uniform OverlayBlock { ST_OVERLAY_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
 layout(std140, binding = ST_BLOCK_REDUCE) uniform ReduceBlock { ST_REDUCE_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
+layout(std140, binding = ST_BLOCK_SCREEN) uniform ScreenBlock { ST_SCREEN_BLOCK(ST_GLSL_MEMBER, ST_GLSL_ARRAY) };
 #undef ST_GLSL_MEMBER
 #undef ST_GLSL_ARRAY
 #endif

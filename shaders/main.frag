@@ -1,6 +1,7 @@
 #version 450 core
 #include "interface.h"
 #include "shadow_sampling.glsl"
+#include "screen_shadow.glsl"
 
 layout(binding = ST_BINDING_BASE_COLOR) uniform sampler2D uBaseColorTex;
 in vec3 vWsPosition;
@@ -36,7 +37,8 @@ void main() {
     vec3 n = normalize(vWsNormal);
     if (!gl_FrontFacing) n = -n;  // double-sided surfaces are lit from the side we see
     float nDotL = dot(n, wsToSun.xyz);
-    ShadowResult s = shadowFactor(vWsPosition, n, nDotL, vVsDepth);
+    ShadowResult s = screenShadow != 0 ? screenShadowFactor(vWsPosition, n, vVsDepth)
+                                       : shadowFactor(vWsPosition, n, nDotL, vVsDepth);
     vec3 density = texelDensityColor(vWsPosition, s.cascade);  // derivatives: uniform flow
     float direct = intensity * max(nDotL, 0.0) * s.factor;
     vec3 color = base.rgb * (ambient + direct);

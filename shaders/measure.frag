@@ -6,11 +6,13 @@
 //   1: ws shading normal, facing the viewer as main.frag lights it; w = N.L
 //   2: x unfiltered test (one nearest compare in the selected cascade with the preset's bias,
 //      no blend band), y filtered factor (the preset's filter and blend band, as main.frag
-//      shades), z cascade (-1 beyond the shadow range), w screen pixels per texel
+//      shades; with filter.screenSpace the upsampled mask main.frag reads), z cascade (-1
+//      beyond the shadow range), w screen pixels per texel
 //   3: the triangle's own (geometric) normal, on the viewer's side like the shading normal;
 //      w = its N.L. Smooth shading normals bend away from it, but rays and depth maps see it.
 #include "interface.h"
 #include "shadow_sampling.glsl"
+#include "screen_shadow.glsl"
 
 layout(binding = ST_BINDING_BASE_COLOR) uniform sampler2D uBaseColorTex;
 in vec3 vWsPosition;
@@ -32,7 +34,8 @@ void main() {
     vec3 n = normalize(vWsNormal);
     if (!gl_FrontFacing) n = -n;
     float nDotL = dot(n, wsToSun.xyz);
-    ShadowResult s = shadowFactor(vWsPosition, n, nDotL, vVsDepth);
+    ShadowResult s = screenShadow != 0 ? screenShadowFactor(vWsPosition, n, vVsDepth)
+                                       : shadowFactor(vWsPosition, n, nDotL, vVsDepth);
     int ci = max(s.cascade, 0);
     float hard = hardShadow(ci, shadowCoord(ci, vWsPosition, n), tanToLight(nDotL));
     mat2 j = texelJacobian(ci, wsDx, wsDy);

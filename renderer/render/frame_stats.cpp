@@ -25,8 +25,11 @@ std::string toJsonText(const FrameStats& s) {
     db["source"] = s.depthBounds.source;
     j["shadowMapBytes"] = s.shadowMapBytes;
     j["filterMapBytes"] = s.filterMapBytes;
+    j["screenShadowBytes"] = s.screenShadowBytes;
     j["gpuShadowMs"] = s.gpuShadowMs;
     j["gpuFilterMs"] = s.gpuFilterMs;
+    j["gpuScreenShadowMs"] = s.gpuScreenShadowMs;
+    j["gpuScreenBlurMs"] = s.gpuScreenBlurMs;
     j["gpuMainMs"] = s.gpuMainMs;
     j["gpuDepthBoundsMs"] = s.gpuDepthBoundsMs;
     j["cpuMs"] = s.cpuMs;

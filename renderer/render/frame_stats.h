@@ -50,9 +50,12 @@ struct FrameStats {
     DepthBoundsStats depthBounds;
     std::vector<CascadeStats> cascades;
     std::size_t shadowMapBytes = 0;
-    std::size_t filterMapBytes = 0;  // the filter's own maps (moment array and scratch), 0 if none
+    std::size_t filterMapBytes = 0;  // the filter's own maps (moment array and scratch; the screen-space targets), 0 if none
+    std::size_t screenShadowBytes = 0;  // filter.screenSpace's targets (part of filterMapBytes)
     double gpuShadowMs = 0.0;  // all cascades
-    double gpuFilterMs = 0.0;  // the filter's extra passes (moment maps and their blur)
+    double gpuFilterMs = 0.0;  // the filter's extra passes (moment maps and their blur; the screen-space path)
+    double gpuScreenShadowMs = 0.0;  // filter.screenSpace: mask, downsample, blurs, upsample (part of gpuFilterMs)
+    double gpuScreenBlurMs = 0.0;    // of which the downsample, blurs and upsample (the rest: the mask pass)
     double gpuMainMs = 0.0;
     double gpuDepthBoundsMs = 0.0;  // depth prepass and reduction (0 without them)
     double cpuMs = 0.0;        // CPU time to plan and submit the frame

@@ -30,20 +30,35 @@ void MeasurePass::ensureTargets(int width, int height) {
     height_ = height;
 }
 
+void MeasurePass::drawScene(const Renderer& r) const {
+    r.sceneGpu().bindGeometry();
+    for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(item, FaceCulling::PerMaterial);
+}
+
 // The main pass's state, so coverage is the same.
-void MeasurePass::draw(const Renderer& r, const glm::mat4& observerViewProj) {
+void MeasurePass::draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) {
+    const bool screen = s.filter.screenSpace == ScreenSpace::Blur;
+    if (screen) {
+        if (!screen_) screen_ = std::make_unique<ScreenShadow>();
+        r.bindShadingInputs();
+        screen_->build(s, observerViewProj, width_, height_, [&] { drawScene(r); });
+    }
     gpu::applyPassState(gpu::opaqueScenePass(fbo_.id(), width_, height_));
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
     const float far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
     glUseProgram(program_.id());
-    view_.upload({observerViewProj});
+    gpu_if::ViewBlock v;
+    v.viewProj = observerViewProj;
+    v.screenShadow = screen ? 1 : 0;
+    view_.upload(v);
     view_.bind(ST_BLOCK_VIEW);
     r.bindShadingInputs();
-    r.sceneGpu().bindGeometry();
-    for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(item, FaceCulling::PerMaterial);
+    if (screen) screen_->bindForSampling();
+    drawScene(r);
     r.shadowMaps().unbindSamplers();
+    if (screen) screen_->unbind();
 }
 
 std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture) const {
@@ -58,7 +73,7 @@ std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture) const {
 MeasureSamples MeasurePass::run(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) {
     gpu::DebugGroup group("measure pass");
     ensureTargets(s.output.width, s.output.height);
-    draw(r, observerViewProj);
+    draw(r, s, observerViewProj);
     return {width_, height_, read(targets_[0]), read(targets_[1]), read(targets_[2]), read(targets_[3])};
 }
 
@@ -66,7 +81,7 @@ std::vector<glm::vec4> MeasurePass::runShadowOnly(const Renderer& r, const Setti
                                                   const glm::mat4& observerViewProj) {
     gpu::DebugGroup group("measure pass (shadow only)");
     ensureTargets(s.output.width, s.output.height);
-    draw(r, observerViewProj);
+    draw(r, s, observerViewProj);
     return read(targets_[2]);
 }
 

@@ -6,12 +6,14 @@
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/measure_samples.h"
 #include "renderer/render/renderer.h"
+#include "renderer/render/screen_shadow.h"
 #include "renderer/settings/settings.h"
 #include "shaders/interface.h"
 
 #include <glm/mat4x4.hpp>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace st {
@@ -31,7 +33,8 @@ public:
 
 private:
     void ensureTargets(int width, int height);
-    void draw(const Renderer& r, const glm::mat4& observerViewProj);
+    void draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj);
+    void drawScene(const Renderer& r) const;
     std::vector<glm::vec4> read(const gpu::Texture& texture) const;
 
     gpu::Program program_;
@@ -39,6 +42,9 @@ private:
     gpu::Texture depth_;
     gpu::Framebuffer fbo_;
     gpu::UniformBuffer<gpu_if::ViewBlock> view_;
+    // filter.screenSpace: the mask drawn with this pass's own draws and observer at its size, by
+    // the renderer's code, so the factor scored is the one the image of that camera shows.
+    std::unique_ptr<ScreenShadow> screen_;
     int width_ = 0;
     int height_ = 0;
 };

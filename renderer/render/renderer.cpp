@@ -23,10 +23,12 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     stats.sceneTriangles = scene_.scene().triangleCount();
     float aspect = float(s.output.width) / float(s.output.height);
     target_.ensure(s.output.width, s.output.height);
-    // Timers: cascades 0..count-1, the main pass, the depth prepass and reduction, the moment maps.
+    // Timers: cascades 0..count-1, the main pass, the depth prepass and reduction, the moment
+    // maps, the screen-space path.
     const int boundsTimer = s.cascades.count + 1;
     const int filterTimer = s.cascades.count + 2;
-    timers_.beginFrame(s.cascades.count + 3);
+    const int screenTimer = s.cascades.count + 3;
+    timers_.beginFrame(s.cascades.count + 4);
     csm::SampleBounds samples;
     const bool reduce = csm::needsSampleBounds(s.cascades);
     if (reduce) {
@@ -52,10 +54,19 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         timers_.end(filterTimer);
         stats.filterMapBytes = moments_.bytes();
     }
+    // The side camera's image filters the maps itself: the mask is the main camera's screen.
+    const bool screen = s.filter.screenSpace == ScreenSpace::Blur && s.output.view != View::Side;
+    if (screen) {
+        timers_.begin(screenTimer);
+        buildScreenShadow(s, plan_.csProj * plan_.vsView, target_.width(), target_.height());
+        timers_.end(screenTimer);
+        stats.screenShadowBytes = screen_->bytes();
+        stats.filterMapBytes += stats.screenShadowBytes;
+    }
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
     else
-        mainPass(s, plan_.csProj * plan_.vsView, target_);
+        mainPass(s, plan_.csProj * plan_.vsView, target_, screen);
     stats.mainTriangles = mainTriangles_;
     stats.mainDraws = mainDraws_;
     stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -66,6 +77,11 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     stats.gpuMainMs = timers_.milliseconds(s.cascades.count);
     if (reduce) stats.gpuDepthBoundsMs = timers_.milliseconds(boundsTimer);
     if (moments) stats.gpuFilterMs = timers_.milliseconds(filterTimer);
+    if (screen) {
+        stats.gpuScreenShadowMs = timers_.milliseconds(screenTimer);
+        stats.gpuScreenBlurMs = screen_->blurMs();
+        stats.gpuFilterMs += stats.gpuScreenShadowMs;
+    }
     return stats;
 }
 
@@ -167,7 +183,17 @@ void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, Offsc
 
 void Renderer::renderMainView(const Settings& s, OffscreenTarget& out) {
     timers_.beginFrame(s.cascades.count + 1);
-    mainPass(s, plan_.csProj * plan_.vsView, out);
+    const bool screen = s.filter.screenSpace == ScreenSpace::Blur;
+    if (screen) buildScreenShadow(s, plan_.csProj * plan_.vsView, out.width(), out.height());
+    mainPass(s, plan_.csProj * plan_.vsView, out, screen);
+}
+
+void Renderer::buildScreenShadow(const Settings& s, const glm::mat4& viewProj, int width, int height) {
+    if (!screen_) screen_ = std::make_unique<ScreenShadow>();
+    bindShadingInputs();
+    screen_->build(s, viewProj, width, height, [&] { drawVisible(viewProj); });
+    shadowMaps_.unbindSamplers();
+    glBindSampler(ST_BINDING_MOMENTS, 0);
 }
 
 void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target) {
@@ -184,19 +210,24 @@ void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const Offsc
     }
 }
 
-void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target) {
+void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen) {
     gpu::DebugGroup group("main pass");
     timers_.begin(s.cascades.count);
     gpu::applyPassState(gpu::opaqueScenePass(target.framebuffer(), target.width(), target.height()));
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glUseProgram(mainProgram_.id());
-    viewBlock_.upload({viewProj});
+    gpu_if::ViewBlock v;
+    v.viewProj = viewProj;
+    v.screenShadow = screen ? 1 : 0;
+    viewBlock_.upload(v);
     viewBlock_.bind(ST_BLOCK_VIEW);
     bindShadingInputs();
+    if (screen) screen_->bindForSampling();
     drawVisible(viewProj);
     shadowMaps_.unbindSamplers();
     glBindSampler(ST_BINDING_MOMENTS, 0);
+    if (screen) screen_->unbind();
     timers_.end(s.cascades.count);
 }
 

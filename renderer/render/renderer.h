@@ -15,6 +15,7 @@
 #include "renderer/render/moment_maps.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/scene_gpu.h"
+#include "renderer/render/screen_shadow.h"
 #include "renderer/render/shadow_maps.h"
 #include "renderer/render/side_view.h"
 #include "renderer/render/texel_cloud.h"
@@ -72,6 +73,9 @@ public:
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
     // The moment maps of the last render() with a moment filter; layers() is 0 before one.
     const MomentMaps& momentMaps() const { return moments_; }
+    // The screen-space path of the last render() or renderMainView() with filter.screenSpace on;
+    // null before one.
+    const ScreenShadow* screenShadow() const { return screen_.get(); }
     int width() const { return target_.width(); }
     int height() const { return target_.height(); }
 
@@ -86,8 +90,11 @@ private:
     void recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const;
     void auditZExtension(const Settings& s, FrameStats& stats) const;
     // Draws the shaded scene seen through viewProj into `target`; shadows always follow the
-    // main camera's cascades.
-    void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target);
+    // main camera's cascades. `screen`: read the factor from screen_'s mask, built for this
+    // viewProj and target size.
+    void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen = false);
+    // filter.screenSpace: the mask of the main camera seen through viewProj at width x height.
+    void buildScreenShadow(const Settings& s, const glm::mat4& viewProj, int width, int height);
     // The scene's triangles inside viewProj's frustum, with per-material face culling.
     void drawVisible(const glm::mat4& viewProj);
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
@@ -96,6 +103,7 @@ private:
     gpu::Program mainProgram_;
     ShadowMaps shadowMaps_;
     MomentMaps moments_;
+    std::unique_ptr<ScreenShadow> screen_;  // on first use
     GpuTimers timers_;
     LinePass lines_;
     OffscreenTarget target_;

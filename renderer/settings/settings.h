@@ -98,6 +98,14 @@ struct EnumNames<FilterWeights> {
     static constexpr std::array<std::string_view, ST_WEIGHTS_COUNT> names{"box", "gaussian"};
 };
 
+// Off: the main pass filters the maps itself. Blur: seed 001's screen-space soft shadows, the
+// filter's factor per pixel blurred in screen space, depth-aware (renderer/render/screen_shadow.h).
+enum class ScreenSpace { Off = ST_SCREEN_OFF, Blur = ST_SCREEN_BLUR };
+template <>
+struct EnumNames<ScreenSpace> {
+    static constexpr std::array<std::string_view, ST_SCREEN_COUNT> names{"off", "blur"};
+};
+
 // Where the cascades' depth maps live (renderer/csm/storage_layout.h). Array: one layer per
 // cascade of a D32F array, one size for all. Atlas: one texture, a viewport per tile (seed 003).
 // Textures: one texture per cascade (seed 002). Atlas and textures allow a size per cascade.
@@ -134,6 +142,7 @@ static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::N
 static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
 static_assert(int(FilterKind::Pcss) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
 static_assert(int(FilterWeights::Gaussian) == ST_WEIGHTS_COUNT - 1 && int(FilterWeights::Box) == 0);
+static_assert(int(ScreenSpace::Blur) == ST_SCREEN_COUNT - 1 && int(ScreenSpace::Off) == 0);
 static_assert(int(CascadeStorage::Textures) == ST_STORAGE_COUNT - 1 && int(CascadeStorage::Array) == 0);
 static_assert(int(View::TexelGrid) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
 
@@ -201,6 +210,11 @@ struct FilterSettings {
     // PCSS (filter.size taps per side spread over the estimated penumbra):
     int blockerTaps = 5;          // taps per side of the blocker search, odd
     float pcssMaxRadius = 8.0f;   // texels: cap of the search and kernel radius
+    // Seed 001's screen-space path (any kind above makes the mask it blurs):
+    ScreenSpace screenSpace = ScreenSpace::Off;
+    int screenDownsample = 2;     // the mask is blurred at 1/N of the output size: 1, 2 (seed 001) or 4
+    int screenBlurRadius = 4;     // downsampled pixels each side of the separable Gaussian, 0 = none
+    float screenDepthSigma = 0.1f;// depth-aware weight: sigma as a fraction of the view depth; 0 = off
     bool operator==(const FilterSettings&) const = default;
 };
 

@@ -24,7 +24,8 @@ Settings everyFieldChanged() {
     s.filter = {.kind = FilterKind::PcfNxN, .size = 5, .weights = FilterWeights::Gaussian, .padding = true,
                 .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f,
                 .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
-                .pcssMaxRadius = 12.0f};
+                .pcssMaxRadius = 12.0f, .screenSpace = ScreenSpace::Blur, .screenDownsample = 4,
+                .screenBlurRadius = 6, .screenDepthSigma = 0.25f};
     s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
     s.output = {.width = 800, .height = 600, .view = View::Cascades, .texelBlock = 16, .sideTexels = true};
     s.path = {.frames = 12,

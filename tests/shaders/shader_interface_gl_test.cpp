@@ -19,7 +19,7 @@ const char* kProbe = R"(#version 450 core
 out vec4 o;
 void main() {
     o = view[0] + wsToSun + viewProj[1] + cascade[1].tint + baseColor
-      + vec4(brightness + float(cascadeCount) + float(reduceMode));
+      + vec4(brightness + float(cascadeCount) + float(reduceMode) + float(screenShadow) + float(screenRadius));
 }
 )";
 
@@ -64,6 +64,8 @@ TEST_F(ShaderInterfaceGLTest, CppStructsMatchTheDriversStd140Layout) {
     expectLayout<gpu_if::MaterialBlock>(p.id());
     expectLayout<gpu_if::OverlayBlock>(p.id());
     expectLayout<gpu_if::ReduceBlock>(p.id());
+    expectLayout<gpu_if::ViewBlock>(p.id());
+    expectLayout<gpu_if::ScreenBlock>(p.id());
     for (const char* m : {"view", "viewProj"}) EXPECT_EQ(resource(p.id(), m, GL_MATRIX_STRIDE), 16) << m;
     EXPECT_EQ(resource(p.id(), "viewProj", GL_OFFSET), 0);
     // The struct array: each element where C++ puts it, matrices column-major like GLM's.
@@ -79,6 +81,7 @@ TEST_F(ShaderInterfaceGLTest, CppStructsMatchTheDriversStd140Layout) {
     EXPECT_EQ(blockSize(p.id(), "MaterialBlock"), GLint(sizeof(gpu_if::MaterialBlock)));
     EXPECT_EQ(blockSize(p.id(), "OverlayBlock"), GLint(sizeof(gpu_if::OverlayBlock)));
     EXPECT_EQ(blockSize(p.id(), "ReduceBlock"), GLint(sizeof(gpu_if::ReduceBlock)));
+    EXPECT_EQ(blockSize(p.id(), "ScreenBlock"), GLint(sizeof(gpu_if::ScreenBlock)));
 }
 
 TEST_F(ShaderInterfaceGLTest, CompileErrorNamesTheIncludedFileAndLine) {
