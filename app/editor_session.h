@@ -99,6 +99,7 @@ private:
     double lastTime_ = 0.0;
     double cpuFrameMs_ = 0.0;
     std::vector<double> frameMs_;  // wall time of every frame, for printFrameTimes
+    std::vector<double> frameCpuMs_;  // CPU time of the whole process in every frame
     // Redraw only what changed, at an interactive resolution while the view moves (issue 13 #10).
     SceneFrameCache frameCache_;
     InteractiveScale interactive_;

@@ -58,6 +58,13 @@ Settings interactiveMaps(const Settings& s) {
     auto half = [](int size) { return std::max(256, size / 2); };
     out.cascades.mapSize = half(s.cascades.mapSize);
     for (int& size : out.cascades.mapSizes) size = half(size);
+    // Cascade i is redrawn at most every i + 1 frames (4 at most), or the preset's interval if
+    // longer: about 2 maps a frame instead of 4. A kept map is sampled through the matrix it was
+    // drawn with (cascade_cache.h), so shadows stay in place; a far cascade only lags the camera.
+    out.cascades.updateInterval.resize(std::size_t(s.cascades.count), 1.0f);
+    for (int i = 0; i < s.cascades.count; ++i)
+        out.cascades.updateInterval[std::size_t(i)] =
+            std::max(out.cascades.updateInterval[std::size_t(i)], float(std::min(i + 1, 4)));
     return out;
 }
 

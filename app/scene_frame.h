@@ -71,9 +71,10 @@ private:
     bool wasMoving_ = false;
 };
 
-// The maps of an interactive frame: half the preset's sizes (at least 256). The depth pass is
-// fill-bound on llvmpipe (4 x 2048 maps cost about 5x 4 x 1024 on truck_town), and every map is
-// redrawn while the camera moves.
+// The maps of an interactive frame: half the preset's sizes (at least 256), and cascade i
+// redrawn every i + 1 frames at most (up to 4). The depth pass is fill-bound on llvmpipe
+// (4 x 2048 maps cost about 5x 4 x 1024 on truck_town), and every map's matrix changes while the
+// camera moves.
 Settings interactiveMaps(const Settings& s);
 
 // A viewport size scaled, at least 16 pixels a side (the editor's smallest scene render).

@@ -108,13 +108,17 @@ TEST(SceneFrameTest, OnlyTheCameraAndTheSunMoveTheView) {
     EXPECT_TRUE(viewMoving(a, b));
 }
 
-TEST(SceneFrameTest, InteractiveMapsAreHalfTheirSizeAndAtLeast256) {
+TEST(SceneFrameTest, InteractiveMapsAreHalfTheirSizeAndFarOnesRedrawnLessOften) {
     Settings s;
     s.cascades.mapSize = 2048;
     s.cascades.mapSizes = {2048, 1024, 512, 256};
     const Settings m = interactiveMaps(s);
     EXPECT_EQ(m.cascades.mapSize, 1024);
     EXPECT_EQ(m.cascades.mapSizes, (std::vector<int>{1024, 512, 256, 256}));
+    s.cascades.count = 4;
+    s.cascades.updateInterval = {1.0f, 1.0f, 5.0f};
+    EXPECT_EQ(interactiveMaps(s).cascades.updateInterval, (std::vector<float>{1.0f, 2.0f, 5.0f, 4.0f}))
+        << "cascade i every i + 1 frames at most, or the preset's longer interval";
     Settings rest = m;
     rest.cascades = s.cascades;
     EXPECT_EQ(rest, s) << "nothing but the maps changes";

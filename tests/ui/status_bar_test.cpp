@@ -13,7 +13,7 @@ TEST(StatusBarTest, SceneRenderTimeScaleAndReuseAreShownApart) {
     EXPECT_EQ(ui::sceneRenderText({.ms = 152.4}), "scene 152 ms");
     EXPECT_EQ(ui::sceneRenderText({.ms = 152.4, .reused = true}), "scene unchanged (drawn in 152 ms)");
     EXPECT_EQ(ui::sceneRenderText({.ms = 61.0, .scale = 0.35, .mapSize = 1024}),
-              "scene 61 ms (interactive: 35 %, maps 1024)");
+              "scene 61 ms (interactive: 35 %, maps 1024, far ones staggered)");
     UiDriver d;
     d.in.cpuFrameMs = 25.0;
     d.in.scene = {.ms = 150.0, .reused = true};
