@@ -21,12 +21,12 @@ std::string frameRateText(const History& cpuFrameMs) {
 }
 
 std::string sceneRenderText(const SceneRenderFigures& scene) {
-    if (scene.ms <= 0.0) return "scene --";
+    if (scene.ms <= 0.0) return "render --";
     char text[96];
-    if (scene.reused) std::snprintf(text, sizeof text, "scene unchanged (drawn in %.0f ms)", scene.ms);
+    if (scene.reused) std::snprintf(text, sizeof text, "image reused (rendered in %.0f ms)", scene.ms);
     else if (scene.mapSize > 0)
-        std::snprintf(text, sizeof text, "scene %.0f ms (interactive: %.0f %%, maps %d, far ones staggered)", scene.ms, 100.0 * scene.scale, scene.mapSize);
-    else std::snprintf(text, sizeof text, "scene %.0f ms", scene.ms);
+        std::snprintf(text, sizeof text, "render %.0f ms (interactive: %.0f %%, maps %d, far ones staggered)", scene.ms, 100.0 * scene.scale, scene.mapSize);
+    else std::snprintf(text, sizeof text, "render %.0f ms", scene.ms);
     return text;
 }
 

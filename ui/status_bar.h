@@ -20,7 +20,8 @@ struct SceneRenderFigures {
     bool reused = false;   // this frame showed the image of an earlier one
 };
 
-// "scene 48 ms", "scene 21 ms (interactive: 50 %, maps 1024, far ones staggered)", "scene unchanged (drawn in 48 ms)".
+// "render 48 ms", "render 21 ms (interactive: 50 %, maps 1024, far ones staggered)",
+// "image reused (rendered in 48 ms)": the scene image's figures, beside the UI's frame rate.
 std::string sceneRenderText(const SceneRenderFigures& scene);
 
 }  // namespace st::ui

@@ -9,11 +9,11 @@ using namespace st;
 using st::test::UiDriver;
 
 TEST(StatusBarTest, SceneRenderTimeScaleAndReuseAreShownApart) {
-    EXPECT_EQ(ui::sceneRenderText({}), "scene --");
-    EXPECT_EQ(ui::sceneRenderText({.ms = 152.4}), "scene 152 ms");
-    EXPECT_EQ(ui::sceneRenderText({.ms = 152.4, .reused = true}), "scene unchanged (drawn in 152 ms)");
+    EXPECT_EQ(ui::sceneRenderText({}), "render --");
+    EXPECT_EQ(ui::sceneRenderText({.ms = 152.4}), "render 152 ms");
+    EXPECT_EQ(ui::sceneRenderText({.ms = 152.4, .reused = true}), "image reused (rendered in 152 ms)");
     EXPECT_EQ(ui::sceneRenderText({.ms = 61.0, .scale = 0.35, .mapSize = 1024}),
-              "scene 61 ms (interactive: 35 %, maps 1024, far ones staggered)");
+              "render 61 ms (interactive: 35 %, maps 1024, far ones staggered)");
     UiDriver d;
     d.in.cpuFrameMs = 25.0;
     d.in.scene = {.ms = 150.0, .reused = true};
