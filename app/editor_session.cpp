@@ -152,30 +152,24 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path());
 }
 
-void EditorSession::renderA(int width, int height) {
+// A's ground truth is read back here, while the renderer holds A's maps (the live frame comes
+// next and replaces them): so the split view renders every frame, never reusing or scaling it.
+void EditorSession::renderA(const ui::UiRequests& r, int width, int height) {
     abRendered_ = false;
     if (!split_ || swapped_) return;
     Settings live = valid_;
     live.output.width = width;
     live.output.height = height;
+    const Settings a = aOnLive(*a_, live);
+    if (!accuracyA_) accuracyA_ = std::make_unique<EditorAccuracy>();
     try {
-        abStats_ = ab_.renderA(*renderer_, aOnLive(*a_, live));
+        abStats_ = ab_.renderA(*renderer_, a);
         abRendered_ = true;
     } catch (const std::exception& e) {  // A's settings on this view are rejected: say so, show live
         status_ = std::string("A: ") + e.what();
         abStats_.reset();
     }
-}
-
-// Every frame, rendered or reused: the schedule starts a job once the frame has stayed still.
-void EditorSession::updateAccuracyA(const ui::UiRequests& r, int width, int height) {
-    if (!split_ || swapped_) return;
-    Settings live = valid_;
-    live.output.width = width;
-    live.output.height = height;
-    if (!accuracyA_) accuracyA_ = std::make_unique<EditorAccuracy>();
-    const bool rendered = abRendered_ && !heldInteractive_ && heldWidth_ == width && heldHeight_ == height;
-    accuracyA_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, aOnLive(*a_, live), scene_);
+    accuracyA_->update(glfwGetTime(), r.accuracyWanted, abRendered_, *renderer_, a, scene_);
 }
 
 SceneFrameInputs EditorSession::sceneInputs(int width, int height, bool interactive) const {
@@ -198,22 +192,23 @@ SceneFrameInputs EditorSession::sceneInputs(int width, int height, bool interact
     return in;
 }
 
-bool EditorSession::renderScene(bool final) {
+bool EditorSession::renderScene(const ui::UiRequests& r, bool final) {
     const bool moving = (previousValid_ && viewMoving(*previousValid_, valid_));
     previousValid_ = valid_;
-    // The split's A columns are composed at the live frame's size: no interactive scale there.
-    const bool scalable = !final && !(split_ && !swapped_);
+    // The split renders every frame at full size (renderA says why).
+    const bool splitShown = split_ && !swapped_;
+    const bool scalable = !final && !splitShown;
     const bool interactive = moving && scalable;
     const double scale = interactive_.update(interactive, cpuFrameMs_);
     const int width = interactive ? scaledSize(sceneWidth_, scale) : sceneWidth_;
     const int height = interactive ? scaledSize(sceneHeight_, scale) : sceneHeight_;
     const SceneFrameInputs in = sceneInputs(width, height, interactive);
-    sceneReused_ = frameCache_.check(in).empty();
+    sceneReused_ = !splitShown && frameCache_.check(in).empty();
     if (sceneReused_) {
         ++reusedFrames_;
     } else {
         const auto t0 = std::chrono::steady_clock::now();
-        renderA(width, height);
+        renderA(r, width, height);
         heldRendered_ = renderViews(in.live);
         // The GL work is queued, not done, when the calls return: finish it, so the time is the
         // scene's and not the panels' (on llvmpipe the swap would wait for it anyway).
@@ -374,8 +369,7 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
     if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
-        const bool rendered = renderScene(final);
-        updateAccuracyA(requests, sceneWidth_, sceneHeight_);
+        const bool rendered = renderScene(requests, final);
         updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
         updateProbe(requests, rendered);
         present();

@@ -51,12 +51,11 @@ private:
     void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
     bool renderViews(const Settings& s);  // s: sized and viewed; false: the settings failed, the last image stays
-    void renderA(int width, int height);  // the split's A half, before the live frame
-    void updateAccuracyA(const ui::UiRequests& r, int width, int height);
+    void renderA(const ui::UiRequests& r, int width, int height);  // the split's A half, before the live frame
     SceneFrameInputs sceneInputs(int width, int height, bool interactive) const;
     // Renders the scene views unless the image held already shows this frame; false: the image
     // held is not the frame of the current settings at the viewport's full size.
-    bool renderScene(bool final);
+    bool renderScene(const ui::UiRequests& r, bool final);
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
     void present();
     void updateProbe(const ui::UiRequests& r, bool rendered);
