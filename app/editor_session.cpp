@@ -176,7 +176,7 @@ SceneFrameInputs EditorSession::sceneInputs(int width, int height, bool interact
     SceneFrameInputs in;
     in.sceneKey = loadedKey_;
     in.rendererGeneration = rendererGeneration_;
-    in.live = interactive ? interactiveMaps(valid_) : valid_;
+    in.live = interactive ? interactiveMaps(valid_, interactive_.mapDivisor()) : valid_;
     in.live.output.width = width;
     in.live.output.height = height;
     if (swapped_) in.live.output.view = View::Side;
@@ -209,7 +209,7 @@ bool EditorSession::renderScene(const ui::UiRequests& r, bool final) {
     } else {
         const auto t0 = std::chrono::steady_clock::now();
         renderA(r, width, height);
-        heldRendered_ = renderViews(in.live);
+        heldRendered_ = renderViews(in.live, interactive ? scale : 1.0);
         // The GL work is queued, not done, when the calls return: finish it, so the time is the
         // scene's and not the panels' (on llvmpipe the swap would wait for it anyway).
         glFinish();
@@ -241,7 +241,7 @@ void EditorSession::placeScene(const ui::UiRequests& r) {
     sceneY_ = fbHeight - top - sceneHeight_;
 }
 
-bool EditorSession::renderViews(const Settings& s) {
+bool EditorSession::renderViews(const Settings& s, double pipScale) {
     const int width = s.output.width, height = s.output.height;
     Settings pipSettings = s;  // the picture shows the other camera
     pipSettings.output.view = valid_.output.view;
@@ -253,8 +253,9 @@ bool EditorSession::renderViews(const Settings& s) {
     }
     {
         // Until the panel reports the size it shows the picture at: a quarter of the window.
-        int w = pipWidth_ >= 16 ? pipWidth_ : std::max(16, width / 4);
-        int h = pipHeight_ >= 16 ? pipHeight_ : std::max(16, height / 4);
+        // While the view moves the picture takes the scene's interactive scale too.
+        int w = pipWidth_ >= 16 ? scaledSize(pipWidth_, pipScale) : std::max(16, width / 4);
+        int h = pipHeight_ >= 16 ? scaledSize(pipHeight_, pipScale) : std::max(16, height / 4);
         if (swapped_) h = std::max(16, w * height / width);  // the main view keeps the window's aspect
         retiredPip_ = OffscreenTarget();
         if (w != pip_.width() || h != pip_.height()) retiredPip_ = std::move(pip_);

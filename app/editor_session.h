@@ -50,7 +50,9 @@ private:
     void handleInput();
     void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
-    bool renderViews(const Settings& s);  // s: sized and viewed; false: the settings failed, the last image stays
+    // s: sized and viewed; pipScale: of the picture-in-picture's size. false: the settings
+    // failed, the last image stays.
+    bool renderViews(const Settings& s, double pipScale);
     void renderA(const ui::UiRequests& r, int width, int height);  // the split's A half, before the live frame
     SceneFrameInputs sceneInputs(int width, int height, bool interactive) const;
     // Renders the scene views unless the image held already shows this frame; false: the image

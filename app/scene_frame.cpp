@@ -45,7 +45,13 @@ double InteractiveScale::update(bool moving, double lastFrameMs) {
         const double ratio = targetMs_ / lastFrameMs;
         // The main pass is fragment-bound: its time goes with the pixels, the square of the scale.
         // A band around the target keeps the scale from hunting frame to frame.
-        if (ratio < 0.85 || ratio > 1.15) {
+        // The image scale's floor still too slow: the maps are what is left to shrink. Full scale
+        // with time to spare: the maps grow back first (the scale then comes down to the target).
+        if (ratio < 0.85 && scale_ <= kMin && mapDivisor_ == 2) {
+            mapDivisor_ = 4;
+        } else if (ratio > 1.15 && scale_ >= 1.0 && mapDivisor_ == 4) {
+            mapDivisor_ = 2;
+        } else if (ratio < 0.85 || ratio > 1.15) {
             const double wanted = std::clamp(scale_ * std::sqrt(ratio), kMin, 1.0);
             scale_ = std::clamp(std::round(wanted / kStep) * kStep, kMin, 1.0);
         }
@@ -53,11 +59,11 @@ double InteractiveScale::update(bool moving, double lastFrameMs) {
     return scale_;
 }
 
-Settings interactiveMaps(const Settings& s) {
+Settings interactiveMaps(const Settings& s, int divisor) {
     Settings out = s;
-    auto half = [](int size) { return std::max(256, size / 2); };
-    out.cascades.mapSize = half(s.cascades.mapSize);
-    for (int& size : out.cascades.mapSizes) size = half(size);
+    auto smaller = [divisor](int size) { return std::max(256, size / divisor); };
+    out.cascades.mapSize = smaller(s.cascades.mapSize);
+    for (int& size : out.cascades.mapSizes) size = smaller(size);
     // Cascade i is redrawn at most every i + 1 frames (4 at most), or the preset's interval if
     // longer: about 2 maps a frame instead of 4. A kept map is sampled through the matrix it was
     // drawn with (cascade_cache.h), so shadows stay in place; a far cascade only lags the camera.

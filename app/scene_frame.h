@@ -64,18 +64,22 @@ public:
     // frame's wall time. Returns the scale of this frame.
     double update(bool moving, double lastFrameMs);
     double scale() const { return scale_; }
+    // The interactive maps' divisor (interactiveMaps): 2, or 4 once the smallest image scale
+    // still misses the target; back to 2 when full scale has time to spare.
+    int mapDivisor() const { return mapDivisor_; }
 
 private:
     double targetMs_;
     double scale_ = 0.5;  // the first gesture's first frame; then what the last gesture settled at
     bool wasMoving_ = false;
+    int mapDivisor_ = 2;
 };
 
-// The maps of an interactive frame: half the preset's sizes (at least 256), and cascade i
-// redrawn every i + 1 frames at most (up to 4). The depth pass is fill-bound on llvmpipe
-// (4 x 2048 maps cost about 5x 4 x 1024 on truck_town), and every map's matrix changes while the
-// camera moves.
-Settings interactiveMaps(const Settings& s);
+// The maps of an interactive frame: the preset's sizes over `divisor` (at least 256), and
+// cascade i redrawn every i + 1 frames at most (up to 4). The depth pass is fill-bound on
+// llvmpipe (4 x 2048 maps cost about 5x 4 x 1024 on truck_town), and every map's matrix changes
+// while the camera moves.
+Settings interactiveMaps(const Settings& s, int divisor = 2);
 
 // A viewport size scaled, at least 16 pixels a side (the editor's smallest scene render).
 int scaledSize(int size, double scale);

@@ -115,6 +115,8 @@ TEST(SceneFrameTest, InteractiveMapsAreHalfTheirSizeAndFarOnesRedrawnLessOften) 
     const Settings m = interactiveMaps(s);
     EXPECT_EQ(m.cascades.mapSize, 1024);
     EXPECT_EQ(m.cascades.mapSizes, (std::vector<int>{1024, 512, 256, 256}));
+    EXPECT_EQ(interactiveMaps(s, 4).cascades.mapSize, 512);
+    EXPECT_EQ(interactiveMaps(s, 4).cascades.mapSizes, (std::vector<int>{512, 256, 256, 256}));
     s.cascades.count = 4;
     s.cascades.updateInterval = {1.0f, 1.0f, 5.0f};
     EXPECT_EQ(interactiveMaps(s).cascades.updateInterval, (std::vector<float>{1.0f, 2.0f, 5.0f, 4.0f}))
@@ -140,8 +142,23 @@ TEST(InteractiveScaleTest, FullResolutionWhenStillAndTheTargetTimeWhileMoving) {
     EXPECT_EQ(scale.update(true, frameMs(k)), settled) << "inside the band: no hunting";
     EXPECT_EQ(scale.update(false, frameMs(k)), 1.0) << "the gesture ended: full resolution the next frame";
     EXPECT_EQ(scale.update(true, 1000.0), settled) << "the next gesture starts where this one settled";
+    EXPECT_EQ(scale.mapDivisor(), 2) << "half-size maps while the image scale can still give";
     for (int i = 0; i < 20; ++i) k = scale.update(true, 2000.0);
     EXPECT_EQ(k, InteractiveScale::kMin);
+    EXPECT_EQ(scale.mapDivisor(), 4) << "the smallest image still too slow: quarter-size maps";
     for (int i = 0; i < 20; ++i) k = scale.update(true, 5.0);
     EXPECT_EQ(k, 1.0);
+    EXPECT_EQ(scale.mapDivisor(), 2) << "full scale with time to spare: the maps grow back";
+}
+
+TEST(InteractiveScaleTest, QuarterMapsOnlyWhenTheSmallestImageMissesTheTarget) {
+    // A made-up frame whose maps cost 120 ms at half size and 40 ms at quarter size, plus the
+    // image's pixels: at the scale's floor the half-size maps alone miss 90 ms.
+    InteractiveScale scale(90.0);
+    auto frameMs = [&scale](double k) { return (scale.mapDivisor() == 2 ? 120.0 : 40.0) + 200.0 * k * k; };
+    double k = scale.update(true, 0.0);
+    for (int i = 0; i < 30; ++i) k = scale.update(true, frameMs(k));
+    EXPECT_EQ(scale.mapDivisor(), 4);
+    EXPECT_NEAR(frameMs(k), 90.0, 0.15 * 90.0) << "then the image scale settles on the target: " << k;
+    EXPECT_GT(k, InteractiveScale::kMin);
 }
