@@ -26,7 +26,7 @@ void runFrames(EditorSession& session, const EditorOptions& opt) {
         if (waiting && std::chrono::steady_clock::now() - start > kAccuracyTimeout)
             throw std::runtime_error("the Accuracy panel's job did not end within 10 minutes");
         const bool last = opt.frames > 0 && frame + 1 >= opt.frames && !waiting;
-        session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr);
+        session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr, last);
         if (last || session.quitRequested()) break;
     }
 }

@@ -12,6 +12,7 @@ struct EditorOptions {
     std::optional<std::filesystem::path> screenshot;  // written after the last frame
     std::optional<std::filesystem::path> sceneShot;   // the scene view alone, after the last frame
     std::optional<std::filesystem::path> saveAs;      // "Save As" after the last frame (scripted runs)
+    float orbitDegPerFrame = 0.0f;  // scripted camera motion: turn around the target about +Y (benchmarks)
     std::vector<int> hover;  // {x, y}: the mouse is put there every frame (scripted probe screenshots)
     std::optional<std::filesystem::path> layoutReport;  // JSON: the scene viewport and every panel's rectangle
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures

@@ -18,6 +18,9 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     editor->add_option("--save-as", opt->saveAs, "Save the settings as a preset after the last frame");
     editor->add_option("--hover", opt->hover, "X,Y: keep the mouse at this window position (probe screenshots)")
         ->expected(2)->delimiter(',');
+    editor->add_option("--orbit", opt->orbitDegPerFrame,
+                       "DEG: turn the camera around its target by DEG degrees every frame (a scripted moving-camera benchmark)")
+        ->check(CLI::Range(-45.0f, 45.0f));
     editor->add_option("--layout-report", opt->layoutReport,
                        "Write the scene viewport's and the panels' rectangles (JSON) after the last frame");
     editor->add_flag("--wait-accuracy", opt->waitAccuracy,

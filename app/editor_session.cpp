@@ -13,12 +13,14 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 
 namespace st::app {
 namespace fs = std::filesystem;
@@ -58,6 +60,7 @@ void EditorSession::loadScene(const std::string& spec, const SceneOptions& optio
         renderer_.reset();  // the old renderer refers to the old scene
         scene_ = std::move(scene);
         renderer_ = std::make_unique<Renderer>(*scene_);
+        ++rendererGeneration_;
         loadedScene_ = spec;
         loadedKey_ = key;
         loadedOptions_ = options;
@@ -116,6 +119,11 @@ void EditorSession::handleInput() {
         atStart.camera = *start;
         ui_->recordEdit(atStart, settings_);
     }
+    if (opt_.orbitDegPerFrame != 0.0f) {  // scripted: no gesture, no undo step, as a benchmark's camera path
+        const float a = glm::radians(opt_.orbitDegPerFrame), c = std::cos(a), sn = std::sin(a);
+        const glm::vec3 d = settings_.camera.position - settings_.camera.target;
+        settings_.camera.position = settings_.camera.target + glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z);
+    }
 }
 
 void EditorSession::applyRequests(const ui::UiRequests& r) {
@@ -144,22 +152,78 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path());
 }
 
+// A's ground truth is read back here, while the renderer holds A's maps (the live frame comes
+// next and replaces them): so the split view renders every frame, never reusing or scaling it.
 void EditorSession::renderA(const ui::UiRequests& r, int width, int height) {
+    abRendered_ = false;
     if (!split_ || swapped_) return;
     Settings live = valid_;
     live.output.width = width;
     live.output.height = height;
     const Settings a = aOnLive(*a_, live);
     if (!accuracyA_) accuracyA_ = std::make_unique<EditorAccuracy>();
-    bool rendered = true;
     try {
         abStats_ = ab_.renderA(*renderer_, a);
+        abRendered_ = true;
     } catch (const std::exception& e) {  // A's settings on this view are rejected: say so, show live
         status_ = std::string("A: ") + e.what();
         abStats_.reset();
-        rendered = false;
     }
-    accuracyA_->update(glfwGetTime(), r.accuracyWanted, rendered, *renderer_, a, scene_);
+    accuracyA_->update(glfwGetTime(), r.accuracyWanted, abRendered_, *renderer_, a, scene_);
+}
+
+SceneFrameInputs EditorSession::sceneInputs(int width, int height, bool interactive) const {
+    SceneFrameInputs in;
+    in.sceneKey = loadedKey_;
+    in.rendererGeneration = rendererGeneration_;
+    in.live = interactive ? interactiveMaps(valid_, interactive_.mapDivisor()) : valid_;
+    in.live.output.width = width;
+    in.live.output.height = height;
+    if (swapped_) in.live.output.view = View::Side;
+    if (split_ && !swapped_) {
+        Settings live = valid_;
+        live.output.width = width;
+        live.output.height = height;
+        in.a = aOnLive(*a_, live);
+    }
+    in.orbit = orbit_;
+    in.pipWidth = pipWidth_, in.pipHeight = pipHeight_;
+    in.swapped = swapped_;
+    return in;
+}
+
+bool EditorSession::renderScene(const ui::UiRequests& r, bool final) {
+    const bool moving = (previousValid_ && viewMoving(*previousValid_, valid_));
+    previousValid_ = valid_;
+    // The split renders every frame at full size (renderA says why).
+    const bool splitShown = split_ && !swapped_;
+    const bool scalable = !final && !splitShown;
+    const bool interactive = moving && scalable;
+    const double scale = interactive_.update(interactive, cpuFrameMs_);
+    const int width = interactive ? scaledSize(sceneWidth_, scale) : sceneWidth_;
+    const int height = interactive ? scaledSize(sceneHeight_, scale) : sceneHeight_;
+    const SceneFrameInputs in = sceneInputs(width, height, interactive);
+    sceneReused_ = !splitShown && frameCache_.check(in).empty();
+    if (sceneReused_) {
+        ++reusedFrames_;
+    } else {
+        const auto t0 = std::chrono::steady_clock::now();
+        renderA(r, width, height);
+        heldRendered_ = renderViews(in.live, interactive ? scale : 1.0);
+        // The GL work is queued, not done, when the calls return: finish it, so the time is the
+        // scene's and not the panels' (on llvmpipe the swap would wait for it anyway).
+        glFinish();
+        sceneMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        sceneRenderMs_.push_back(sceneMs_);
+        sceneScales_.push_back(scale);
+        frameCache_.rendered(in, heldRendered_ ? &stats_ : nullptr, abRendered_ && abStats_ ? &*abStats_ : nullptr);
+        heldInteractive_ = interactive;
+        heldScale_ = interactive ? scale : 1.0;
+        heldMapSize_ = interactive ? in.live.cascades.mapSize : 0;
+        heldWidth_ = width, heldHeight_ = height;
+    }
+    // An interactive image is never measured or probed: the figures describe the full frame only.
+    return heldRendered_ && !heldInteractive_ && heldWidth_ == sceneWidth_ && heldHeight_ == sceneHeight_;
 }
 
 // The viewport the panels leave, in framebuffer pixels (HiDPI scale) with GL's bottom-left origin.
@@ -177,11 +241,10 @@ void EditorSession::placeScene(const ui::UiRequests& r) {
     sceneY_ = fbHeight - top - sceneHeight_;
 }
 
-bool EditorSession::renderViews(int width, int height) {
-    Settings s = valid_;
-    s.output.width = width;
-    s.output.height = height;
-    if (swapped_) s.output.view = View::Side;
+bool EditorSession::renderViews(const Settings& s, double pipScale) {
+    const int width = s.output.width, height = s.output.height;
+    Settings pipSettings = s;  // the picture shows the other camera
+    pipSettings.output.view = valid_.output.view;
     try {
         stats_ = renderer_->render(s, orbit_);
     } catch (const std::exception& e) {  // settings the math rejects: keep the last image
@@ -190,14 +253,15 @@ bool EditorSession::renderViews(int width, int height) {
     }
     {
         // Until the panel reports the size it shows the picture at: a quarter of the window.
-        int w = pipWidth_ >= 16 ? pipWidth_ : std::max(16, width / 4);
-        int h = pipHeight_ >= 16 ? pipHeight_ : std::max(16, height / 4);
+        // While the view moves the picture takes the scene's interactive scale too.
+        int w = pipWidth_ >= 16 ? scaledSize(pipWidth_, pipScale) : std::max(16, width / 4);
+        int h = pipHeight_ >= 16 ? scaledSize(pipHeight_, pipScale) : std::max(16, height / 4);
         if (swapped_) h = std::max(16, w * height / width);  // the main view keeps the window's aspect
         retiredPip_ = OffscreenTarget();
         if (w != pip_.width() || h != pip_.height()) retiredPip_ = std::move(pip_);
         pip_.ensure(w, h);
-        if (swapped_) renderer_->renderMainView(valid_, pip_);
-        else renderer_->renderSideView(valid_, orbit_, pip_);
+        if (swapped_) renderer_->renderMainView(pipSettings, pip_);
+        else renderer_->renderSideView(pipSettings, orbit_, pip_);
     }
     // A moment filter's tiles read the frame's cascade block (filter kind, exponents).
     const bool moments = isMomentFilter(valid_.filter.kind);
@@ -222,8 +286,10 @@ void EditorSession::updateAccuracy(const ui::UiRequests& r, bool rendered, int w
 void EditorSession::present() {
     const GLfloat background[4] = {0.06f, 0.06f, 0.06f, 1.0f};
     glClearNamedFramebufferfv(0, GL_COLOR, 0, background);
-    glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, sceneWidth_, sceneHeight_, sceneX_, sceneY_,
-                           sceneX_ + sceneWidth_, sceneY_ + sceneHeight_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    // An interactive frame is smaller than the viewport: stretched over it, filtered.
+    const bool full = renderer_->width() == sceneWidth_ && renderer_->height() == sceneHeight_;
+    glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, renderer_->width(), renderer_->height(), sceneX_, sceneY_,
+                           sceneX_ + sceneWidth_, sceneY_ + sceneHeight_, GL_COLOR_BUFFER_BIT, full ? GL_NEAREST : GL_LINEAR);
     if (split_ && !swapped_ && abStats_) ab_.composite(0, divider_, sceneX_, sceneY_);
 }
 
@@ -232,6 +298,7 @@ ui::UiInputs EditorSession::uiInputs() {
     ui::UiInputs in;
     in.stats = &stats_;
     in.cpuFrameMs = cpuFrameMs_;
+    in.scene = {sceneMs_, heldScale_, heldMapSize_, sceneReused_};
     for (int i = 0; i < shadowTiles_->layers(); ++i) {
         in.shadowLayers.push_back(tex(shadowTiles_->layerTexture(i)));
         if (GLuint v = shadowTiles_->varianceTexture(i)) in.shadowVariance.push_back(tex(v));
@@ -273,8 +340,20 @@ void EditorSession::updateProbe(const ui::UiRequests& r, bool rendered) {
     probeView_ = readProbe(*probe_.samples(), int(r.probePixel.x), int(r.probePixel.y), s, texelWorld, accuracy_->classes());
 }
 
-void EditorSession::frame(const fs::path* screenshot) {
+namespace {
+// CPU time of every thread of the process (the UI, llvmpipe's rasterisers, the Accuracy rays):
+// unlike wall time it barely depends on what else the machine runs, so a benchmark on a shared
+// machine still says what a frame costs.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+}  // namespace
+
+void EditorSession::frame(const fs::path* screenshot, bool final) {
     auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = processCpuMs();
     if (opt_.hover.size() == 2) {  // scripted: the pointer rests there, as a user's would
         if (frameMs_.empty()) glfwFocusWindow(window_.handle());
         glfwSetCursorPos(window_.handle(), opt_.hover[0], opt_.hover[1]);
@@ -291,8 +370,7 @@ void EditorSession::frame(const fs::path* screenshot) {
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
     if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
-        renderA(requests, sceneWidth_, sceneHeight_);
-        const bool rendered = renderViews(sceneWidth_, sceneHeight_);
+        const bool rendered = renderScene(requests, final);
         updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
         updateProbe(requests, rendered);
         present();
@@ -304,6 +382,7 @@ void EditorSession::frame(const fs::path* screenshot) {
     window_.swapBuffers();
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     frameMs_.push_back(cpuFrameMs_);
+    frameCpuMs_.push_back(processCpuMs() - cpu0);
 }
 
 void EditorSession::writeSceneShot(const fs::path& file) const {
@@ -336,7 +415,21 @@ void EditorSession::printFrameTimes() const {
     std::vector<double> t(frameMs_.begin() + 1, frameMs_.end());  // the first frame compiles shaders
     std::sort(t.begin(), t.end());
     double median = t[t.size() / 2];
-    std::printf("%zu frames, median frame %.1f ms (%.1f fps)\n", t.size(), median, 1000.0 / median);
+    std::vector<double> c(frameCpuMs_.begin() + 1, frameCpuMs_.end());
+    std::sort(c.begin(), c.end());
+    std::printf("%zu frames, median frame %.1f ms (%.1f fps), process CPU %.1f ms a frame\n", t.size(), median,
+                1000.0 / median, c[c.size() / 2]);
+    // The UI's frame rate and the scene's render time differ once frames reuse the image.
+    if (sceneRenderMs_.size() < 2) {
+        std::printf("scene rendered %zu times, reused %d times\n", sceneRenderMs_.size(), reusedFrames_);
+        return;
+    }
+    std::vector<double> r(sceneRenderMs_.begin() + 1, sceneRenderMs_.end());
+    std::vector<double> k(sceneScales_.begin() + 1, sceneScales_.end());
+    std::sort(r.begin(), r.end());
+    std::sort(k.begin(), k.end());
+    std::printf("scene rendered %zu times (median %.1f ms, median scale %.0f %%), reused %d times\n",
+                sceneRenderMs_.size(), r[r.size() / 2], 100.0 * k[k.size() / 2], reusedFrames_);
 }
 
 void EditorSession::writeScreenshot(const fs::path& file, int width, int height) {

@@ -9,6 +9,7 @@
 #include "app/fly_camera.h"
 #include "app/view_actions.h"
 #include "app/scene_probe.h"
+#include "app/scene_frame.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/shadow_map_view.h"
@@ -29,12 +30,13 @@ public:
     EditorSession(EditorWindow& window, const EditorOptions& opt);
     ~EditorSession();
     // One frame: input, render, panels, present. Writes a screenshot of the whole window first
-    // if `screenshot` is set.
-    void frame(const std::filesystem::path* screenshot);
+    // if `screenshot` is set. `final`: a scripted run's last frame, at full resolution whatever
+    // moves (its image is what --scene-screenshot and --save-as take).
+    void frame(const std::filesystem::path* screenshot, bool final = false);
     bool quitRequested() const { return quit_; }
     void writeSceneShot(const std::filesystem::path& file) const;  // the main view, no panels
     void saveAs(const std::filesystem::path& file);  // output size = the scene view's size
-    void printFrameTimes() const;                    // median CPU frame time and frame rate
+    void printFrameTimes() const;                    // medians of the frame and of the scene renders
     // {"display": [w, h], "scene": [x, y, w, h], "windows": {"Settings": [x, y, w, h], ...}}, ImGui's
     // display pixels from the top left, as the last frame placed them.
     void writeLayoutReport(const std::filesystem::path& file) const;
@@ -48,8 +50,14 @@ private:
     void handleInput();
     void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
-    bool renderViews(int width, int height);  // false: the settings failed, the last image stays
+    // s: sized and viewed; pipScale: of the picture-in-picture's size. false: the settings
+    // failed, the last image stays.
+    bool renderViews(const Settings& s, double pipScale);
     void renderA(const ui::UiRequests& r, int width, int height);  // the split's A half, before the live frame
+    SceneFrameInputs sceneInputs(int width, int height, bool interactive) const;
+    // Renders the scene views unless the image held already shows this frame; false: the image
+    // held is not the frame of the current settings at the viewport's full size.
+    bool renderScene(const ui::UiRequests& r, bool final);
     void updateAccuracy(const ui::UiRequests& r, bool rendered, int width, int height);
     void present();
     void updateProbe(const ui::UiRequests& r, bool rendered);
@@ -92,12 +100,29 @@ private:
     double lastTime_ = 0.0;
     double cpuFrameMs_ = 0.0;
     std::vector<double> frameMs_;  // wall time of every frame, for printFrameTimes
+    std::vector<double> frameCpuMs_;  // CPU time of the whole process in every frame
+    // Redraw only what changed, at an interactive resolution while the view moves (issue 13 #10).
+    SceneFrameCache frameCache_;
+    InteractiveScale interactive_;
+    int rendererGeneration_ = 0;
+    std::optional<Settings> previousValid_;  // last frame's, to see the view move
+    bool heldRendered_ = false;   // the held image is a frame of the held inputs (not a failure)
+    bool heldInteractive_ = false;  // the held image is an interactive one (smaller, coarser maps)
+    double heldScale_ = 1.0;      // the held image's scale of the viewport
+    int heldMapSize_ = 0;         // its cascades.mapSize while interactive
+    int heldWidth_ = 0, heldHeight_ = 0;  // and its pixels
+    double sceneMs_ = 0.0;        // wall time of the held image's render, GL work finished
+    bool sceneReused_ = false;    // this frame showed the held image again
+    std::vector<double> sceneRenderMs_;  // of every frame that rendered, for printFrameTimes
+    std::vector<double> sceneScales_;    // of every frame that rendered
+    int reusedFrames_ = 0;
     // A/B split (Compare menu) and the Sweep panel's runs.
     std::optional<Settings> a_;    // "Set as A", as the panels hold it
     bool split_ = false;
     float divider_ = 0.5f;
     AbSplitRender ab_;
     std::optional<FrameStats> abStats_;          // A's last frame while the split is on
+    bool abRendered_ = false;                    // A's settings rendered on the held frame
     std::unique_ptr<EditorAccuracy> accuracyA_;  // A's own ground-truth job
     std::unique_ptr<EditorSweep> sweep_;
     std::vector<std::string> sweepable_;         // sweep::isSweepable over the field table

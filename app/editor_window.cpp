@@ -12,6 +12,8 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <atomic>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -19,6 +21,16 @@
 namespace st::app {
 namespace fs = std::filesystem;
 namespace {
+// Ctrl+C in the terminal (or SIGTERM) closes the window as its close button does: the panels ask
+// about unsaved changes, and the layout and window size are saved. A second one ends the process.
+std::atomic<bool> interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void onWindowInterrupt(int sig) {
+    interrupted = true;
+    std::signal(sig, SIG_DFL);
+}
+
 fs::path configDirectory() {
     if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return fs::path(xdg) / "shadowtune";
     if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".config" / "shadowtune";
@@ -77,9 +89,14 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, keyCallback);
     ImGui_ImplOpenGL3_Init("#version 450");
+    interrupted = false;
+    std::signal(SIGINT, onWindowInterrupt);
+    std::signal(SIGTERM, onWindowInterrupt);
 }
 
 EditorWindow::~EditorWindow() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
     saveWindowSize(configDir_, window_);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -88,9 +105,12 @@ EditorWindow::~EditorWindow() {
     glfwTerminate();
 }
 
-bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
+bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_) || interrupted; }
 
-void EditorWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+void EditorWindow::cancelClose() {
+    glfwSetWindowShouldClose(window_, GLFW_FALSE);
+    interrupted = false;
+}
 
 void EditorWindow::keyCallback(GLFWwindow* window, int key, int, int action, int) {
     if (action == GLFW_REPEAT) return;  // ImGui makes its own repeats from the held key

@@ -22,7 +22,7 @@ public:
     EditorWindow& operator=(const EditorWindow&) = delete;
 
     GLFWwindow* handle() const { return window_; }
-    bool shouldClose() const;
+    bool shouldClose() const;  // the close button, or SIGINT/SIGTERM (Ctrl+C in the terminal)
     void cancelClose();  // the close button was handled: keep running until the panels agree
     void beginFrame();  // poll events, start an ImGui frame
     void endFrame();    // render ImGui over the back buffer

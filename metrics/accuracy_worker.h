@@ -40,6 +40,9 @@ public:
     // test see that a job was stopped rather than waited for; the editor passes none.
     using JobEndObserver = std::function<void(const JobControl& control, bool completed)>;
 
+    // Added to the worker thread's nice value (and so its ray threads'): the UI comes first.
+    static constexpr int kNiceIncrement = 10;
+
     // rayThreads: threads the rows of a job run on (0: one per core).
     explicit AccuracyWorker(unsigned rayThreads = 0, JobEndObserver onJobEnd = {});
     ~AccuracyWorker();

@@ -14,7 +14,7 @@ packages=(
   libplplot-dev plplot-driver-cairo
   libcairo2-dev libfontconfig-dev
   libgtest-dev googletest
-  xvfb xauth
+  xvfb xauth xdotool
   clang-14 libclang-rt-14-dev llvm-14
 )
 

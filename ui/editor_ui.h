@@ -23,6 +23,7 @@
 #include "ui/layout.h"
 #include "ui/probe.h"
 #include "ui/split_bar.h"
+#include "ui/status_bar.h"
 
 #include <imgui.h>
 
@@ -41,6 +42,7 @@ struct UiState;
 struct UiInputs {
     const FrameStats* stats = nullptr;       // the last rendered frame's figures; nullptr: none yet
     double cpuFrameMs = 0.0;                 // wall time of the previous frame (the CPU plot)
+    SceneRenderFigures scene;                // the scene image on screen: its cost, scale, reuse
     std::vector<ImTextureID> shadowLayers;   // one GL texture per cascade, depth already remapped for
                                              // display; shown with texel row 0 at the bottom
     std::vector<int> shadowMapSizes;         // texels per side of each cascade's map

@@ -20,6 +20,16 @@ std::string frameRateText(const History& cpuFrameMs) {
     return text;
 }
 
+std::string sceneRenderText(const SceneRenderFigures& scene) {
+    if (scene.ms <= 0.0) return "render --";
+    char text[96];
+    if (scene.reused) std::snprintf(text, sizeof text, "image reused (rendered in %.0f ms)", scene.ms);
+    else if (scene.mapSize > 0)
+        std::snprintf(text, sizeof text, "render %.0f ms (interactive: %.0f %%, maps %d, far ones staggered)", scene.ms, 100.0 * scene.scale, scene.mapSize);
+    else std::snprintf(text, sizeof text, "render %.0f ms", scene.ms);
+    return text;
+}
+
 void drawStatusBar(UiFrame& f) {
     constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
                                        ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing |
@@ -27,6 +37,9 @@ void drawStatusBar(UiFrame& f) {
     if (beginDockedPanel(f, Panel::Status, "##status", nullptr, flags)) {
         ImGui::TextUnformatted(frameRateText(f.state.timing.cpuFrameMs).c_str());
         recordItem(f.state.rects, "status.fps");
+        ImGui::SameLine(0.0f, 24.0f);
+        ImGui::TextUnformatted(sceneRenderText(f.in.scene).c_str());
+        recordItem(f.state.rects, "status.sceneRender");
         const Rect& scene = f.state.layout.scene;
         ImGui::SameLine(0.0f, 24.0f);
         ImGui::Text("scene %.0f x %.0f px", double(scene.width()), double(scene.height()));

@@ -10,4 +10,18 @@ namespace st::ui {
 // "-- fps" before the first frame.
 std::string frameRateText(const History& cpuFrameMs);
 
+// The scene image on screen: the editor redraws it only when something it shows changed, and
+// at a lower resolution while the view moves (issue 13 #10), so the UI's frame rate above is not
+// the scene's cost.
+struct SceneRenderFigures {
+    double ms = 0.0;       // wall time of the image's render (0: none yet)
+    double scale = 1.0;    // of the viewport's width and height; < 1 while the view moves
+    int mapSize = 0;       // the maps' size while the view moves (0: the preset's)
+    bool reused = false;   // this frame showed the image of an earlier one
+};
+
+// "render 48 ms", "render 21 ms (interactive: 50 %, maps 1024, far ones staggered)",
+// "image reused (rendered in 48 ms)": the scene image's figures, beside the UI's frame rate.
+std::string sceneRenderText(const SceneRenderFigures& scene);
+
 }  // namespace st::ui

@@ -9,7 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -200,6 +205,27 @@ TEST(AccuracyWorkerTest, DeliversTheLastFrameSubmittedOnly) {
     EXPECT_FALSE(worker.progress().busy);
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     EXPECT_FALSE(worker.take());  // the first frame's result never arrives, and nothing twice
+}
+
+// Issue 13 #10: the rays must not starve the thread drawing the window.
+TEST(AccuracyWorkerTest, RunsBelowTheCallersPriority) {
+    const auto tid = [] { return static_cast<id_t>(syscall(SYS_gettid)); };
+    const int callerNice = getpriority(PRIO_PROCESS, tid());
+    std::atomic<int> workerNice{-100};
+    std::atomic<int> rowNice{-100};
+    {
+        AccuracyWorker worker(1, [&](const JobControl&, bool) { workerNice = getpriority(PRIO_PROCESS, tid()); });
+        worker.submit(boxFrame(boxScene(), 16, 16));
+        ASSERT_TRUE(waitForOutcome(worker));
+    }
+    EXPECT_EQ(workerNice.load(), std::min(19, callerNice + AccuracyWorker::kNiceIncrement));
+    EXPECT_EQ(getpriority(PRIO_PROCESS, tid()), callerNice) << "the caller's own priority is untouched";
+    // A thread the worker starts for its rows inherits the value (Linux nice values are per thread).
+    std::thread([&] {
+        setpriority(PRIO_PROCESS, tid(), workerNice);
+        forEachRowParallel(4, [&](int) { rowNice = getpriority(PRIO_PROCESS, tid()); }, RowControl{nullptr, nullptr, 2});
+    }).join();
+    EXPECT_EQ(rowNice.load(), workerNice.load());
 }
 
 TEST(AccuracyWorkerTest, CancelledJobIsNeverHandedOver) {
