@@ -22,7 +22,7 @@ struct CostReport {
     int frames = 0;           // timed frames (after the warm-up frame)
     double gpuShadowMs = 0.0; // medians
     double gpuMainMs = 0.0;
-    double gpuFilterMs = 0.0; // the filter's extra passes (moment maps and their blur)
+    double gpuFilterMs = 0.0; // the filter's extra passes (moment maps and their blur, the screen-space path)
     double cpuMs = 0.0;
     std::size_t shadowMapBytes = 0;
     std::size_t filterMapBytes = 0;  // the filter's own maps

@@ -99,6 +99,12 @@ std::string filterNotApplicable(std::string_view p, FilterKind k) {
     if ((p == "filter.blockerTaps" || p == "filter.pcssMaxRadius") && k != FilterKind::Pcss) return "Used by pcss only.";
     return {};
 }
+
+std::string screenNotApplicable(std::string_view p, const FilterSettings& f) {
+    if (p.starts_with("filter.screen") && p != "filter.screenSpace" && f.screenSpace == ScreenSpace::Off)
+        return "Used by the screen-space blur only (filter.screenSpace \"blur\").";
+    return {};
+}
 }  // namespace
 
 std::string notApplicableReason(const FieldInfo& field, const Settings& s) {
@@ -111,6 +117,7 @@ std::string notApplicableReason(const FieldInfo& field, const Settings& s) {
     if (p == "cascades.atlasPadding" && s.cascades.storage != CascadeStorage::Atlas) return "Used with storage \"atlas\" only.";
     if (p == "cascades.mapSizes" && s.cascades.storage == CascadeStorage::Array)
         return "A texture array has one size for every layer: use storage \"atlas\" or \"textures\" for a size per cascade.";
+    if (p.starts_with("filter.screen")) return screenNotApplicable(p, s.filter);
     if (p.starts_with("filter.")) return filterNotApplicable(p, s.filter.kind);
     if (p == "bias.receiverPlane" && isMomentFilter(s.filter.kind))
         return "A moment filter has no per-texel depth compare to bias.";

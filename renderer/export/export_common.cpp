@@ -76,6 +76,9 @@ void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades) {
     if (skips)
         e.add("(cascade update interval)", numbers(std::vector<double>(c.updateInterval.begin(), c.updateInterval.end())),
               M::NoEquivalent, "cascades.updateInterval: frames between redraws of each cascade; no settings field for it");
+    if (s.filter.screenSpace != ScreenSpace::Off)
+        e.add("(screen-space shadow blur)", true, M::NoEquivalent,
+              "filter.screenSpace: the shadow mask blurred in screen space (seed 001); no shadow setting does it");
     if (s.filter.padding)
         e.add("(PCF padding)", true, M::NoEquivalent, "filter.padding grows each light box by the kernel's reach (seed 004)");
     if (!engineFades && c.fadeBand > 0.0f)

@@ -116,9 +116,11 @@ TEST(ExportMathTest, ShadowtuneOnlySettingsAreListedWhereUsed) {
     s.cascades.depthBounds = DepthBounds::Fit;
     s.cascades.updateInterval = {1, 1, 2, 4};
     s.filter.padding = true;
+    s.filter.screenSpace = ScreenSpace::Blur;
     for (size_t i = 0; i < kEngineNames.size(); ++i) {
         const EngineExport e = exportSettings(s, Engine(i));
-        for (const char* name : {"(depth-fitted cascades)", "(cascade update interval)", "(PCF padding)"}) {
+        for (const char* name :
+             {"(depth-fitted cascades)", "(cascade update interval)", "(PCF padding)", "(screen-space shadow blur)"}) {
             ASSERT_NE(e.find(name), nullptr) << kEngineNames[i] << " " << name;
             EXPECT_EQ(e.find(name)->mapping, Mapping::NoEquivalent);
         }

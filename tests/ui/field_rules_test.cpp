@@ -180,4 +180,9 @@ TEST(FieldRulesTest, FilterStorageAndViewFieldsApplyToTheirModesOnly) {
     EXPECT_FALSE(applies("output.sideTexels", s));
     s.output.view = View::Side;
     EXPECT_TRUE(applies("output.sideTexels", s));
+    EXPECT_TRUE(applies("filter.screenSpace", s));
+    EXPECT_FALSE(applies("filter.screenBlurRadius", s));
+    s.filter.screenSpace = ScreenSpace::Blur;
+    for (const char* p : {"filter.screenBlurRadius", "filter.screenDownsample", "filter.screenDepthSigma"})
+        EXPECT_TRUE(applies(p, s)) << p;
 }
