@@ -96,7 +96,7 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     glfwSetCursorPosCallback(window_, cursorPosCallback);
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window_, &x, &y);  // where a click before the first move happens
-    mouse_.move(x, y);
+    mouse_.place(x, y);
     ImGui_ImplOpenGL3_Init("#version 450");
     interrupted = false;
     std::signal(SIGINT, onWindowInterrupt);

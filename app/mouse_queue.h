@@ -25,6 +25,9 @@ public:
 
     // From the cursor-position callback, in the order they came.
     void move(double x, double y);
+    // Where the cursor is before its first move (the window opened under it): the position a
+    // button uses, with no event, so the frame keeps the window's own position until a click.
+    void place(double x, double y) { last_ = {static_cast<float>(x), static_cast<float>(y)}; }
     // From the button callback: at the position of the latest move (GLFW reports none with the
     // button, and glfwGetCursorPos asks the X server for where the cursor is now, not where it was).
     void button(int button, bool down);
