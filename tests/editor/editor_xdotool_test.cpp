@@ -111,7 +111,10 @@ TEST(EditorXdotoolTest, QuickClicksThatMoveOnHitTheWidgetsTheyWereMadeOn) {
     const auto click = [](const std::string& at) {
         return "xdotool mousemove --window $wid " + at + " mousedown 1 sleep 0.01 mouseup 1 mousemove --window $wid 640 400\nsleep 0.6\n";
     };
-    const std::string actions = "wid=$(xdotool search --name '^shadowtune' | head -1)\n"
+    // The title names the preset once the first frame has run: before that ImGui has no panel
+    // to hover, and a click would miss however it was fed (the 1 s wait is not enough under load).
+    const std::string actions = "wid=$(timeout 60 xdotool search --sync --name '^shadowtune - p[.]json' | head -1)\n"
+                                "[ -n \"$wid\" ] || exit 101\n"
                                 "xdotool mousemove --window $wid 640 400\nsleep 0.3\n" +
                                 click(centre("ground", true)) + click(centre("presets.save", false));
     const int code = driveEditor(dir, preset.string(), actions);
