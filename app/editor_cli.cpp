@@ -22,7 +22,7 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
                        "DEG: turn the camera around its target by DEG degrees every frame (a scripted moving-camera benchmark)")
         ->check(CLI::Range(-45.0f, 45.0f));
     editor->add_option("--layout-report", opt->layoutReport,
-                       "Write the scene viewport's and the panels' rectangles (JSON) after the last frame");
+                       "Write the scene viewport's and the panels' and widgets' rectangles (JSON) after the last frame");
     editor->add_flag("--wait-accuracy", opt->waitAccuracy,
                      "With --frames: keep drawing until the Accuracy panel shows its figures, then print them");
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");

@@ -406,6 +406,7 @@ void EditorSession::writeLayoutReport(const fs::path& file) const {
     j["windows"] = nlohmann::json::object();
     for (const auto& [key, r] : ui_->itemRects())
         if (key.rfind("window.", 0) == 0) j["windows"][key.substr(7)] = box(r.min, {r.max.x - r.min.x, r.max.y - r.min.y});
+        else j["items"][key] = box(r.min, {r.max.x - r.min.x, r.max.y - r.min.y});  // where a script clicks
     writeTextAtomic(file, j.dump(2) + "\n");
     std::printf("wrote %s\n", file.string().c_str());
 }

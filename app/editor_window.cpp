@@ -12,6 +12,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
@@ -84,10 +85,18 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     ImGui::GetIO().IniFilename = iniPath_.c_str();
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
-    // Keys go through our queue instead of the backend's callback, which wrote io.KeysDown
-    // directly; the backend keeps the mouse, wheel and text callbacks.
+    // Keys and mouse buttons go through our queues instead of the backend's callbacks, which
+    // wrote io.KeysDown directly and latched presses only; the backend keeps the wheel, text,
+    // focus and cursor-enter callbacks. Its NewFrame still writes io.MouseDown and io.MousePos
+    // from the live state, which beginFrame overwrites from the queue. 1.86's backend sets no
+    // cursor-position callback, so ours replaces nothing.
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, keyCallback);
+    glfwSetMouseButtonCallback(window_, mouseButtonCallback);
+    glfwSetCursorPosCallback(window_, cursorPosCallback);
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window_, &x, &y);  // where a click before the first move happens
+    mouse_.place(x, y);
     ImGui_ImplOpenGL3_Init("#version 450");
     interrupted = false;
     std::signal(SIGINT, onWindowInterrupt);
@@ -117,6 +126,14 @@ void EditorWindow::keyCallback(GLFWwindow* window, int key, int, int action, int
     static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->keys_.push(key, action == GLFW_PRESS);
 }
 
+void EditorWindow::cursorPosCallback(GLFWwindow* window, double x, double y) {
+    static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->mouse_.move(x, y);
+}
+
+void EditorWindow::mouseButtonCallback(GLFWwindow* window, int button, int action, int) {
+    static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->mouse_.button(button, action == GLFW_PRESS);
+}
+
 void EditorWindow::beginFrame() {
     glfwPollEvents();
     ImGuiIO& io = ImGui::GetIO();
@@ -125,6 +142,10 @@ void EditorWindow::beginFrame() {
     io.KeyCtrl = held.ctrl, io.KeyShift = held.shift, io.KeyAlt = held.alt, io.KeySuper = held.super;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    static_assert(IM_ARRAYSIZE(ImGuiIO::MouseDown) == MouseQueue::kButtons);
+    const auto shown = mouse_.feed();
+    std::copy(mouse_.down().begin(), mouse_.down().end(), io.MouseDown);
+    if (shown) io.MousePos = {shown->x, shown->y};  // else the backend's: the cursor, or none when it left
     ImGui::NewFrame();
 }
 

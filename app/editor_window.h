@@ -5,6 +5,7 @@
 // Window size and the ImGui layout (imgui.ini) persist in $XDG_CONFIG_HOME/shadowtune
 // (default ~/.config/shadowtune).
 #include "app/key_queue.h"
+#include "app/mouse_queue.h"
 
 #include <filesystem>
 #include <string>
@@ -33,9 +34,12 @@ public:
 
 private:
     static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
+    static void cursorPosCallback(GLFWwindow* window, double x, double y);
+    static void mouseButtonCallback(GLFWwindow* window, int button, int action, int mods);
 
     GLFWwindow* window_ = nullptr;
     KeyQueue keys_;  // fed to ImGui a change per key per frame, so no tap is lost (issue 13 #3)
+    MouseQueue mouse_;  // likewise a button change per frame, at the place it happened
     std::filesystem::path configDir_;
     std::string iniPath_;  // must outlive the ImGui context (io.IniFilename points into it)
     std::string title_;
