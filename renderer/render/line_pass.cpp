@@ -9,6 +9,7 @@ namespace st {
 
 LinePass::LinePass() {
     program_ = linkShaderFiles("lines.vert", "lines.frag", "lines");
+    pointProgram_ = linkShaderFiles("texel_points.vert", "lines.frag", "texel points");
     vao_ = gpu::createVertexArray();
     const GLuint locations[2] = {ST_ATTRIB_POSITION, ST_ATTRIB_COLOR};
     const GLuint offsets[2] = {offsetof(LineVertex, position), offsetof(LineVertex, color)};
@@ -24,20 +25,24 @@ LinePass::LinePass() {
     visible_.upload(bright);
 }
 
+void LinePass::upload(const std::vector<LineVertex>& vertices, const glm::mat4& viewProj) {
+    if (vertices.size() > capacity_) {  // grow only; immutable storage is recreated
+        capacity_ = vertices.size() * 2;
+        buffer_ = gpu::createBuffer(nullptr, GLsizeiptr(capacity_ * sizeof(LineVertex)), GL_DYNAMIC_STORAGE_BIT);
+        glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(LineVertex));
+    }
+    glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(vertices.size() * sizeof(LineVertex)), vertices.data());
+    view_.upload({viewProj});
+    view_.bind(ST_BLOCK_VIEW);
+    glBindVertexArray(vao_.id());
+}
+
 void LinePass::draw(const std::vector<LineVertex>& lines, const glm::mat4& viewProj, GLuint framebuffer, int width,
                     int height) {
     if (lines.empty()) return;
     gpu::DebugGroup group("wireframes");
-    if (lines.size() > capacity_) {  // grow only; immutable storage is recreated
-        capacity_ = lines.size() * 2;
-        buffer_ = gpu::createBuffer(nullptr, GLsizeiptr(capacity_ * sizeof(LineVertex)), GL_DYNAMIC_STORAGE_BIT);
-        glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(LineVertex));
-    }
-    glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(lines.size() * sizeof(LineVertex)), lines.data());
-    view_.upload({viewProj});
-    view_.bind(ST_BLOCK_VIEW);
+    upload(lines, viewProj);
     glUseProgram(program_.id());
-    glBindVertexArray(vao_.id());
     // Hidden parts dim, visible parts bright: boxes below the ground stay readable.
     gpu::PassState state;
     state.framebuffer = framebuffer;
@@ -50,6 +55,24 @@ void LinePass::draw(const std::vector<LineVertex>& lines, const glm::mat4& viewP
     gpu::applyPassState(state);
     visible_.bind(ST_BLOCK_OVERLAY);
     glDrawArrays(GL_LINES, 0, GLsizei(lines.size()));
+}
+
+void LinePass::drawPoints(const std::vector<LineVertex>& points, const glm::mat4& viewProj, GLuint framebuffer,
+                          int width, int height) {
+    if (points.empty()) return;
+    gpu::DebugGroup group("points");
+    upload(points, viewProj);
+    glUseProgram(pointProgram_.id());
+    gpu::PassState state;
+    state.framebuffer = framebuffer;
+    state.viewport = {0, 0, width, height};
+    state.depthTest = true;
+    state.depthFunc = GL_LEQUAL;
+    gpu::applyPassState(state);
+    visible_.bind(ST_BLOCK_OVERLAY);
+    glPointSize(2.0f);
+    glDrawArrays(GL_POINTS, 0, GLsizei(points.size()));
+    glPointSize(1.0f);
 }
 
 }  // namespace st

@@ -202,11 +202,11 @@ void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const Offsc
     mainPass(s, viewProj, target);
     lines_.draw(cascadeWireframes(plan_), viewProj, target.framebuffer(), target.width(), target.height());
     if (s.output.sideTexels) {
-        if (!texelCloud_) texelCloud_ = std::make_unique<TexelCloudPass>();
         const gpu_if::CascadeBlock block = cascadeBlock(s, plan_);  // the fits the maps were drawn with
         std::vector<glm::mat4> matrices;
         for (int i = 0; i < s.cascades.count; ++i) matrices.push_back(block.cascade[i].shadowMatrix);
-        texelCloud_->draw(shadowMaps_, plan_, s.cascades.selection, matrices, viewProj, target.framebuffer(), target.width(), target.height());
+        lines_.drawPoints(texelCloud(shadowMaps_, plan_, s.cascades.selection, matrices), viewProj, target.framebuffer(),
+                          target.width(), target.height());
     }
 }
 

@@ -109,7 +109,6 @@ private:
     OffscreenTarget target_;
     csm::CascadePlan plan_;
     std::unique_ptr<DepthBoundsPass> depthBounds_;  // on first use
-    std::unique_ptr<TexelCloudPass> texelCloud_;    // on first use (output.sideTexels)
     gpu::UniformBuffer<gpu_if::FrameBlock> frameBlock_;
     gpu::UniformBuffer<gpu_if::CascadeBlock> cascadeBlock_;
     gpu::UniformBuffer<gpu_if::ViewBlock> viewBlock_;

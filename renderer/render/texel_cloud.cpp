@@ -1,7 +1,5 @@
 #include "renderer/render/texel_cloud.h"
 
-#include "renderer/gpu/pass_state.h"
-#include "renderer/render/shader_library.h"
 #include "renderer/render/shadow_maps.h"
 
 #include <glm/glm.hpp>
@@ -57,56 +55,18 @@ int texelCloudStride(int mapSize) {
     return std::max(1, int(std::ceil(double(mapSize) / perSide)));
 }
 
-TexelCloudPass::TexelCloudPass() {
-    program_ = linkShaderFiles("texel_points.vert", "lines.frag", "texel points");
-    vao_ = gpu::createVertexArray();
-    const GLuint locations[2] = {ST_ATTRIB_POSITION, ST_ATTRIB_COLOR};
-    const GLuint offsets[2] = {offsetof(LineVertex, position), offsetof(LineVertex, color)};
-    for (int i = 0; i < 2; ++i) {
-        glEnableVertexArrayAttrib(vao_.id(), locations[i]);
-        glVertexArrayAttribFormat(vao_.id(), locations[i], 3, GL_FLOAT, GL_FALSE, offsets[i]);
-        glVertexArrayAttribBinding(vao_.id(), locations[i], 0);
-    }
-    gpu_if::OverlayBlock bright;
-    bright.brightness = 1.0f;
-    bright_.upload(bright);
-}
-
-void TexelCloudPass::draw(const ShadowMaps& maps, const csm::CascadePlan& plan, Selection selection,
-                          const std::vector<glm::mat4>& shadowMatrices,
-                          const glm::mat4& viewProj, GLuint framebuffer, int width, int height) {
-    gpu::DebugGroup group("texels in world");
+std::vector<LineVertex> texelCloud(const ShadowMaps& maps, const csm::CascadePlan& plan, Selection selection,
+                                   const std::vector<glm::mat4>& shadowMatrices) {
     std::vector<LineVertex> points;
     for (int i = 0; i < maps.cascades() && i < int(shadowMatrices.size()); ++i) {
         const csm::MapTile& tile = maps.tile(i);
         const csm::MapTexture& texture = maps.layout().textures[std::size_t(tile.texture)];
         const TileTexels t{tile.x, tile.y, tile.size, texture.width, texture.height};
-        const auto inSlice = [&](glm::vec3 p) { return shadedByCascade(plan, selection, shadowMatrices, i, p); };
+        const auto shaded = [&](glm::vec3 p) { return shadedByCascade(plan, selection, shadowMatrices, i, p); };
         backProjectTexels(readCascadeDepth(maps, i), t, shadowMatrices[std::size_t(i)], texelCloudStride(tile.size),
-                          cascadeTint(i), inSlice, points);
+                          cascadeTint(i), shaded, points);
     }
-    points_ = points.size();
-    if (points.empty()) return;
-    if (points.size() > capacity_) {  // grow only; immutable storage is recreated
-        capacity_ = points.size() * 2;
-        buffer_ = gpu::createBuffer(nullptr, GLsizeiptr(capacity_ * sizeof(LineVertex)), GL_DYNAMIC_STORAGE_BIT);
-        glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(LineVertex));
-    }
-    glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(points.size() * sizeof(LineVertex)), points.data());
-    view_.upload({viewProj});
-    view_.bind(ST_BLOCK_VIEW);
-    bright_.bind(ST_BLOCK_OVERLAY);
-    glUseProgram(program_.id());
-    glBindVertexArray(vao_.id());
-    gpu::PassState state;
-    state.framebuffer = framebuffer;
-    state.viewport = {0, 0, width, height};
-    state.depthTest = true;
-    state.depthFunc = GL_LEQUAL;
-    gpu::applyPassState(state);
-    glPointSize(2.0f);
-    glDrawArrays(GL_POINTS, 0, GLsizei(points.size()));
-    glPointSize(1.0f);
+    return points;
 }
 
 }  // namespace st

@@ -1,13 +1,10 @@
 #pragma once
 // Seed 003's view of how a shadow map "sees" the scene: every texel that holds a caster, back-
 // projected through its cascade's shadow matrix to the world point it stores, drawn as a point in
-// the cascade's tint over the side view (output.sideTexels). The unprojection is pure math, kept
-// apart from the draw so it is tested without a context.
+// the cascade's tint over the side view (output.sideTexels; LinePass::drawPoints draws them). The
+// unprojection is pure math, tested without a context.
 #include "renderer/csm/cascade_plan.h"
-#include "renderer/gpu/gl.h"
-#include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/side_view.h"
-#include "shaders/interface.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -42,24 +39,9 @@ bool shadedByCascade(const csm::CascadePlan& plan, Selection selection, const st
 inline constexpr int kTexelCloudPointsPerCascade = 1 << 17;
 int texelCloudStride(int mapSize);
 
-class TexelCloudPass {
-public:
-    TexelCloudPass();
-    // Reads the maps back (the cost of this debug view), then draws the points depth-tested
-    // into `framebuffer`, which holds the side view's scene.
-    void draw(const ShadowMaps& maps, const csm::CascadePlan& plan, Selection selection,
-              const std::vector<glm::mat4>& shadowMatrices,
-              const glm::mat4& viewProj, GLuint framebuffer, int width, int height);
-    std::size_t points() const { return points_; }
-
-private:
-    gpu::Program program_;
-    gpu::VertexArray vao_;
-    gpu::Buffer buffer_;
-    std::size_t capacity_ = 0;
-    std::size_t points_ = 0;
-    gpu::UniformBuffer<gpu_if::ViewBlock> view_;
-    gpu::UniformBuffer<gpu_if::OverlayBlock> bright_;
-};
+// Every cascade's texels that it shades (shadedByCascade), read back from the maps: the cost of
+// this debug view, paid only when the side view is re-rendered with output.sideTexels.
+std::vector<LineVertex> texelCloud(const ShadowMaps& maps, const csm::CascadePlan& plan, Selection selection,
+                                   const std::vector<glm::mat4>& shadowMatrices);
 
 }  // namespace st

@@ -144,19 +144,12 @@ TEST_F(TexelViewsGLTest, SideTexelsLieOnTheScene) {
         const gpu_if::CascadeBlock block = cascadeBlock(s, r.plan());
         std::vector<glm::mat4> matrices{block.cascade[0].shadowMatrix, block.cascade[1].shadowMatrix};
         std::size_t onScene = 0, total = 0;
-        for (int c = 0; c < 2; ++c) {
-            const csm::MapTile& tile = r.shadowMaps().tile(c);
-            const csm::MapTexture& tex = r.shadowMaps().layout().textures[std::size_t(tile.texture)];
-            std::vector<LineVertex> points;
-            backProjectTexels(readCascadeDepth(r.shadowMaps(), c), {tile.x, tile.y, tile.size, tex.width, tex.height},
-                              matrices[std::size_t(c)], 1, cascadeTint(c), [](glm::vec3) { return true; }, points);
-            for (const LineVertex& v : points) {
-                const glm::vec3 p = v.position;
-                const bool ground = std::abs(p.y) < 0.05f && std::abs(p.x) <= 20.05f && std::abs(p.z) <= 20.05f;
-                const bool box = p.x > -1.05f && p.x < 1.05f && p.z > -1.05f && p.z < 1.05f && p.y > 1.95f && p.y < 4.05f;
-                onScene += ground || box;
-                ++total;
-            }
+        for (const LineVertex& v : texelCloud(r.shadowMaps(), r.plan(), s.cascades.selection, matrices)) {
+            const glm::vec3 p = v.position;
+            const bool ground = std::abs(p.y) < 0.05f && std::abs(p.x) <= 20.05f && std::abs(p.z) <= 20.05f;
+            const bool box = p.x > -1.05f && p.x < 1.05f && p.z > -1.05f && p.z < 1.05f && p.y > 1.95f && p.y < 4.05f;
+            onScene += ground || box;
+            ++total;
         }
         EXPECT_GT(total, 1000u);
         EXPECT_GE(double(onScene), 0.999 * double(total)) << onScene << " of " << total;
