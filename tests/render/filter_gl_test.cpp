@@ -24,11 +24,7 @@ class FilterGLTest : public test::GLTest {};
 // A low sun on the box-over-plane scene with a tiny constant bias and no slope bias: the plane
 // shows acne under every kernel unless the receiver-plane bias removes it.
 Settings acneSettings() {
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {0.0f, 9.0f, 16.0f};
-    s.camera.target = {0.0f, 0.0f, 0.0f};
-    s.camera.farPlane = 60.0f;
+    Settings s = test::boxOverPlaneView({0.0f, 9.0f, 16.0f}, {0.0f, 0.0f, 0.0f}, 60.0f);
     s.light.azimuth = 30.0f;
     s.light.elevation = 20.0f;
     s.cascades.mapSize = 512;

@@ -24,11 +24,7 @@ namespace {
 class MomentsGLTest : public test::GLTest {};
 
 Settings boxSettings(FilterKind kind) {
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {0.0f, 12.0f, 14.0f};
-    s.camera.target = {0.0f, 0.0f, 0.0f};
-    s.camera.farPlane = 60.0f;
+    Settings s = test::boxOverPlaneView({0.0f, 12.0f, 14.0f}, {0.0f, 0.0f, 0.0f}, 60.0f);
     s.light.azimuth = 30.0f;
     s.light.elevation = 55.0f;
     s.cascades.count = 2;

@@ -19,11 +19,7 @@ namespace {
 class RenderGLTest : public test::GLTest {};
 
 Settings boxOverPlaneSettings() {
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {0.0f, 12.0f, 14.0f};
-    s.camera.target = {0.0f, 0.0f, 0.0f};
-    s.camera.farPlane = 100.0f;
+    Settings s = test::boxOverPlaneView({0.0f, 12.0f, 14.0f}, {0.0f, 0.0f, 0.0f}, 100.0f);
     s.light.azimuth = 30.0f;
     s.light.elevation = 55.0f;
     s.output = {320, 240, View::Shadow};

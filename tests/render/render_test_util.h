@@ -9,6 +9,17 @@
 
 namespace st::test {
 
+// The built-in box-over-plane scene (a 2 m box 2 m above a 40 m ground) seen from `eye` toward
+// `target`, the camera's far plane at `farPlane`; everything else default.
+inline Settings boxOverPlaneView(glm::vec3 eye, glm::vec3 target, float farPlane) {
+    Settings s;
+    s.scene = "builtin:box-over-plane";
+    s.camera.position = eye;
+    s.camera.target = target;
+    s.camera.farPlane = farPlane;
+    return s;
+}
+
 inline Rgba8Image renderImage(Renderer& r, const Settings& s) {
     r.render(s);
     return {r.width(), r.height(), r.readRgba8()};

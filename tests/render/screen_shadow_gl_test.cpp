@@ -37,11 +37,7 @@ std::vector<float> readTexture(GLuint texture, GLenum format, int components, in
 // box's shadow on the ground spans x in [-5, -1], z in [-1, 1] and its edges at z = +-1 run
 // along screen rows.
 Settings topDownBox() {
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {-3.0f, 8.0f, 0.2f};
-    s.camera.target = {-3.0f, 0.0f, 0.0f};
-    s.camera.farPlane = 40.0f;
+    Settings s = test::boxOverPlaneView({-3.0f, 8.0f, 0.2f}, {-3.0f, 0.0f, 0.0f}, 40.0f);
     s.light.azimuth = 0.0f;
     s.light.elevation = 45.0f;
     s.cascades.count = 1;
@@ -56,11 +52,7 @@ Settings topDownBox() {
 // The box seen from the front with the sun behind it: its front face (toward the camera) faces
 // away from the sun (mask 0) in front of lit ground a few metres farther back.
 Settings frontBox() {
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {0.0f, 6.0f, 9.0f};
-    s.camera.target = {0.0f, 2.0f, 0.0f};
-    s.camera.farPlane = 40.0f;
+    Settings s = test::boxOverPlaneView({0.0f, 6.0f, 9.0f}, {0.0f, 2.0f, 0.0f}, 40.0f);
     s.light.azimuth = -90.0f;  // the sun toward -Z: shadows fall toward the camera, in front of the box
     s.light.elevation = 50.0f;
     s.cascades.count = 1;

@@ -59,11 +59,7 @@ TEST_F(StorageGLTest, ArrayAtlasAndTexturesGiveTheSameImageWhenSizesMatch) {
 TEST_F(StorageGLTest, PerCascadeSizesRenderAtTheirStatedResolution) {
     Scene scene = makeBuiltinScene("box-over-plane");
     Renderer r(scene);
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {0.0f, 12.0f, 14.0f};
-    s.camera.target = {0.0f, 0.0f, 0.0f};
-    s.camera.farPlane = 100.0f;
+    Settings s = test::boxOverPlaneView({0.0f, 12.0f, 14.0f}, {0.0f, 0.0f, 0.0f}, 100.0f);
     s.output = {160, 90, View::Shaded};
     s.cascades.count = 2;
     for (CascadeStorage storage : {CascadeStorage::Atlas, CascadeStorage::Textures}) {

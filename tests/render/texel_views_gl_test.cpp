@@ -126,11 +126,7 @@ TEST(TexelCloudTest, TexelsBackProjectToTheirCentres) {
 TEST_F(TexelViewsGLTest, SideTexelsLieOnTheScene) {
     Scene scene = makeBuiltinScene("box-over-plane");
     Renderer r(scene);
-    Settings s;
-    s.scene = "builtin:box-over-plane";
-    s.camera.position = {0.0f, 8.0f, 12.0f};
-    s.camera.target = {0.0f, 0.0f, 0.0f};
-    s.camera.farPlane = 40.0f;
+    Settings s = test::boxOverPlaneView({0.0f, 8.0f, 12.0f}, {0.0f, 0.0f, 0.0f}, 40.0f);
     s.cascades.count = 2;
     s.cascades.mapSize = 256;
     s.output = {240, 160, View::Side};
