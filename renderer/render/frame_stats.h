@@ -1,6 +1,8 @@
 #pragma once
 // What one frame reports: the derived figures the editor shows next to the knobs and headless
 // replay writes beside each image.
+#include "renderer/render/pass_work.h"
+
 #include <glm/vec3.hpp>
 
 #include <cstddef>
@@ -61,6 +63,7 @@ struct FrameStats {
     double cpuMs = 0.0;        // CPU time to plan and submit the frame
     std::size_t mainTriangles = 0;  // submitted by the main pass after frustum culling of clusters
     int mainDraws = 0;
+    FrameWork work;            // counted work per pass (pass_work.h), filled by Renderer::render
     std::size_t sceneTriangles = 0;
     int width = 0;
     int height = 0;
