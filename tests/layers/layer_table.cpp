@@ -53,6 +53,12 @@ std::vector<Use> usesAt(const json& node, const std::string& key, const std::str
     return out;
 }
 
+// A misspelt key ("may_inlcude") would silently allow nothing or everything: refuse it.
+void onlyKeys(const json& node, const std::set<std::string>& keys, const std::string& where) {
+    for (const auto& [key, value] : node.items())
+        if (!keys.count(key)) throw std::runtime_error(where + "/" + key + ": unknown key");
+}
+
 std::string joined(const std::vector<std::string>& items, const std::string& sep) {
     std::string out;
     for (const auto& item : items) out += (out.empty() ? "" : sep) + item;
@@ -267,6 +273,8 @@ Table loadTable(const fs::path& file) {
         throw std::runtime_error(file.string() + ": " + e.what());
     }
     try {
+        if (!j.is_object()) throw std::runtime_error("/: expected an object");
+        onlyKeys(j, {"comment", "scanned", "everywhere", "layers"}, "");
         Table t;
         t.scanned = stringsAt(j, "scanned", "");
         t.everywhere = stringsAt(j, "everywhere", "");
@@ -275,6 +283,7 @@ Table loadTable(const fs::path& file) {
             const json& l = j["layers"][i];
             const std::string at = "/layers/" + std::to_string(i);
             if (!l.is_object()) throw std::runtime_error(at + ": expected an object");
+            onlyKeys(l, {"name", "files", "role", "target", "may_include", "external", "gl_calls"}, at);
             if (l.contains("gl_calls") && !l["gl_calls"].is_boolean()) throw std::runtime_error(at + "/gl_calls: expected true or false");
             t.layers.push_back({stringAt(l, "name", at), stringsAt(l, "files", at), stringAt(l, "role", at),
                                 stringAt(l, "target", at), usesAt(l, "may_include", at), usesAt(l, "external", at),

@@ -48,6 +48,12 @@ bool anyContains(const std::vector<std::string>& lines, const std::string& part)
     return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(part) != std::string::npos; });
 }
 
+// A line starting with `file` (then its line number) that holds `rule`: real files move lines.
+bool anyAt(const std::vector<std::string>& lines, const std::string& file, const std::string& rule) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.rfind(file + ":", 0) == 0 && l.find(rule) != std::string::npos; });
+}
+
 // low <- mid <- high; mid only from high/a.cpp.
 Table threeLayers() {
     Table t;
@@ -161,10 +167,12 @@ TEST(LayersTest, RealTreeFailsATableThatForbidsWhatItIncludes) {
     for (Layer& l : t.layers) {
         if (l.name == "renderer/gpu") l.external.clear();  // the GL loader
         if (l.name == "renderer/csm") l.mayInclude.clear();  // settings.h
+        if (l.name == "renderer/render") l.glCalls = false;
     }
     const auto v = texts(checkTree(t, kRoot));
-    EXPECT_TRUE(anyContains(v, "renderer/gpu/gl.h:4: #include <epoxy/gl.h>: layer \"renderer/gpu\" may not include the library header epoxy/gl.h"));
-    EXPECT_TRUE(anyContains(v, "renderer/csm/splits.h:3: #include \"renderer/settings/settings.h\": layer \"renderer/csm\" may not include"));
+    EXPECT_TRUE(anyAt(v, "renderer/gpu/gl.h", "#include <epoxy/gl.h>: layer \"renderer/gpu\" may not include the library header epoxy/gl.h"));
+    EXPECT_TRUE(anyAt(v, "renderer/csm/splits.h", "#include \"renderer/settings/settings.h\": layer \"renderer/csm\" may not include"));
+    EXPECT_TRUE(anyAt(v, "renderer/render/present.cpp", "layer \"renderer/render\" makes the GL call glBlitNamedFramebuffer()"));
 }
 
 TEST(LayersTest, TableErrorsNameTheJsonPath) {
@@ -175,6 +183,13 @@ TEST(LayersTest, TableErrorsNameTheJsonPath) {
         FAIL() << "a malformed table loaded";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("t.json: /layers/0/may_include/0: expected a string"), std::string::npos) << e.what();
+    }
+    tree.write("u.json", R"({"scanned": ["a"], "layers": [{"name": "a", "files": ["a/"], "role": "", "target": "", "may_inlcude": []}]})");
+    try {
+        loadTable(tree.root() / "u.json");
+        FAIL() << "a table with a misspelt key loaded";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("u.json: /layers/0/may_inlcude: unknown key"), std::string::npos) << e.what();
     }
 }
 
