@@ -29,7 +29,7 @@ int checkIncludes(const Table& table, const fs::path& root) {
     const auto violations = checkTree(table, root);
     for (const auto& v : violations) std::cerr << v.text() << "\n";
     if (violations.empty()) return 0;
-    std::cerr << violations.size() << " include(s) against the layer table docs/layers.json"
+    std::cerr << violations.size() << " violation(s) of the layer table docs/layers.json"
               << " (docs/architecture.md#layers): move the code down a layer, or change the table if the layering changed.\n";
     return 1;
 }
