@@ -1,5 +1,6 @@
 #include "app/ab_split_render.h"
 
+#include "renderer/render/present.h"
 #include "renderer/settings/method_on_view.h"
 
 #include <algorithm>
@@ -20,16 +21,15 @@ int dividerColumn(int width, float fraction) {
 FrameStats AbSplitRender::renderA(Renderer& r, const Settings& aLive) {
     const FrameStats stats = r.render(aLive);
     image_.ensure(r.width(), r.height());
-    glBlitNamedFramebuffer(r.framebuffer(), image_.framebuffer(), 0, 0, r.width(), r.height(), 0, 0, r.width(),
-                           r.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    const PixelRect frame{0, 0, r.width(), r.height()};
+    blitColor(r.framebuffer(), frame, image_.framebuffer(), frame);
     return stats;
 }
 
 void AbSplitRender::composite(GLuint dst, float fraction, int dstX, int dstY) const {
     const int x = dividerColumn(image_.width(), fraction);
     if (x <= 0) return;
-    glBlitNamedFramebuffer(image_.framebuffer(), dst, 0, 0, x, image_.height(), dstX, dstY, dstX + x, dstY + image_.height(),
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    blitColor(image_.framebuffer(), {0, 0, x, image_.height()}, dst, {dstX, dstY, x, image_.height()});
 }
 
 }  // namespace st::app

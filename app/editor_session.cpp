@@ -3,13 +3,13 @@
 #include "app/preset_list.h"
 #include "app/layout_file.h"
 #include "app/side_split_handles.h"
-#include "renderer/image/flip_rows.h"
 #include "renderer/image/image_io.h"
+#include "renderer/render/device.h"
+#include "renderer/render/present.h"
 #include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "sweep/sweep_spec.h"
 
-#include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -212,7 +212,7 @@ bool EditorSession::renderScene(const ui::UiRequests& r, bool final) {
         heldRendered_ = renderViews(in.live, interactive ? scale : 1.0);
         // The GL work is queued, not done, when the calls return: finish it, so the time is the
         // scene's and not the panels' (on llvmpipe the swap would wait for it anyway).
-        glFinish();
+        finishDeviceWork();
         sceneMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         sceneRenderMs_.push_back(sceneMs_);
         sceneScales_.push_back(scale);
@@ -284,12 +284,11 @@ void EditorSession::updateAccuracy(const ui::UiRequests& r, bool rendered, int w
 // The scene into its viewport; the rest of the window is the panels' (cleared, so nothing of an
 // earlier, larger viewport shows between them). With the split on, A's columns go left of the divider.
 void EditorSession::present() {
-    const GLfloat background[4] = {0.06f, 0.06f, 0.06f, 1.0f};
-    glClearNamedFramebufferfv(0, GL_COLOR, 0, background);
+    clearWindow({0.06f, 0.06f, 0.06f, 1.0f});
     // An interactive frame is smaller than the viewport: stretched over it, filtered.
     const bool full = renderer_->width() == sceneWidth_ && renderer_->height() == sceneHeight_;
-    glBlitNamedFramebuffer(renderer_->framebuffer(), 0, 0, 0, renderer_->width(), renderer_->height(), sceneX_, sceneY_,
-                           sceneX_ + sceneWidth_, sceneY_ + sceneHeight_, GL_COLOR_BUFFER_BIT, full ? GL_NEAREST : GL_LINEAR);
+    blitColor(renderer_->framebuffer(), {0, 0, renderer_->width(), renderer_->height()}, 0,
+              {sceneX_, sceneY_, sceneWidth_, sceneHeight_}, full ? BlitFilter::Nearest : BlitFilter::Linear);
     if (split_ && !swapped_ && abStats_) ab_.composite(0, divider_, sceneX_, sceneY_);
 }
 
@@ -434,12 +433,7 @@ void EditorSession::printFrameTimes() const {
 }
 
 void EditorSession::writeScreenshot(const fs::path& file, int width, int height) {
-    Rgba8Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-    flipRows(std::span(img.pixels), std::size_t(width) * 4);
+    Rgba8Image img{width, height, readWindowRgba8(width, height)};
     for (std::size_t i = 3; i < img.pixels.size(); i += 4) img.pixels[i] = 255;  // the window is opaque
     writeImageAtomic(file, img);
     std::printf("wrote %s (%dx%d)\n", file.string().c_str(), width, height);

@@ -1,10 +1,9 @@
 #include "app/editor_window.h"
 
 #include "renderer/gpu/debug_output.h"
-#include "renderer/gpu/pass_state.h"
 #include "renderer/image/image_io.h"
+#include "renderer/render/present.h"
 
-#include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -154,9 +153,7 @@ void EditorWindow::endFrame() {
     int w = 0, h = 0;
     framebufferSize(w, h);
     // The backend sets blending and scissoring itself; the rest is the window's framebuffer.
-    gpu::PassState ui;
-    ui.viewport = {0, 0, w, h};
-    gpu::applyPassState(ui);
+    bindWindowForOverlay(w, h);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

@@ -3,8 +3,8 @@
 #include "app/preset_batch.h"
 
 #include "metrics/measure_session.h"
-#include "renderer/gpu/gl.h"
 #include "renderer/image/image_io.h"
+#include "renderer/render/device.h"
 #include "renderer/render/frame_stats_text.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/scene_cache.h"
@@ -23,9 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 void checkDeviceLimits(const Settings& s, const fs::path& preset) {
-    GLint maxSize = 0, maxLayers = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    const int maxSize = deviceLimits().maxTextureSize;
     if (s.cascades.mapSize > maxSize)
         throw std::runtime_error(preset.string() + ": cascades.mapSize: " +
                                  std::to_string(s.cascades.mapSize) +
@@ -62,7 +60,7 @@ FrameStats benchmark(Renderer& r, const Settings& s, int frames, const fs::path&
     for (int f = 0; f < frames; ++f) {
         auto t0 = std::chrono::steady_clock::now();
         stats = r.render(s);
-        glFinish();
+        finishDeviceWork();
         wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         shadow.push_back(stats.gpuShadowMs);
         main.push_back(stats.gpuMainMs);

@@ -3,10 +3,9 @@
 #include "app/sweep_progress.h"
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
+#include "renderer/render/device.h"
 #include "renderer/settings/settings_json.h"
 #include "sweep/sweep_run.h"
-
-#include <epoxy/gl.h>
 
 #include <csignal>
 #include <cstdio>
@@ -30,8 +29,8 @@ extern "C" void onInterrupt(int) {
 }
 
 std::string machineText() {
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return std::string(renderer ? renderer : "unknown GL renderer") + ", " +
+    const std::string renderer = deviceRendererName();
+    return (renderer.empty() ? "unknown GL renderer" : renderer) + ", " +
            std::to_string(std::thread::hardware_concurrency()) + " cores";
 }
 

@@ -15,7 +15,7 @@ install(FILES ${CMAKE_SOURCE_DIR}/schema/preset.schema.json ${CMAKE_SOURCE_DIR}/
 # The headers shadowtune::csm needs, at their paths in the source tree.
 set(ST_HEADER_DIR ${CMAKE_INSTALL_INCLUDEDIR}/shadowtune)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/renderer/csm/ DESTINATION ${ST_HEADER_DIR}/renderer/csm FILES_MATCHING PATTERN "*.h")
-install(FILES ${CMAKE_SOURCE_DIR}/renderer/settings/settings.h DESTINATION ${ST_HEADER_DIR}/renderer/settings)
+install(FILES ${CMAKE_SOURCE_DIR}/renderer/settings/settings.h ${CMAKE_SOURCE_DIR}/renderer/settings/split_range.h DESTINATION ${ST_HEADER_DIR}/renderer/settings)
 # settings.h includes shaders/codes.h (plain #defines, valid C++ and GLSL) once that exists.
 install(FILES ${CMAKE_SOURCE_DIR}/shaders/codes.h DESTINATION ${ST_HEADER_DIR}/shaders OPTIONAL)
 

@@ -1,7 +1,7 @@
 #include "ui/field_rules.h"
 
-#include "renderer/csm/split_range.h"
 #include "renderer/settings/number_text.h"
+#include "renderer/settings/split_range.h"
 
 #include <algorithm>
 #include <cmath>
@@ -158,7 +158,7 @@ std::vector<float> fitManualSplits(const Settings& s, std::span<const float> cur
     if (splits.empty() && currentSplits.size() == needed + 2) {
         return {currentSplits.begin() + 1, currentSplits.end() - 1};
     }
-    const float end = csm::splitRangeEnd(s.camera, c);
+    const float end = splitRangeEnd(s.camera, c);
     const float last = splits.empty() ? s.camera.nearPlane : splits.back();
     const std::size_t missing = needed - splits.size();
     for (std::size_t j = 0; j < missing; ++j) {

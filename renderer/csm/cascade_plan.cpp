@@ -1,8 +1,8 @@
 #include "renderer/csm/cascade_plan.h"
 
-#include "renderer/csm/split_range.h"
 #include "renderer/csm/selection.h"
 #include "renderer/csm/splits.h"
+#include "renderer/settings/split_range.h"
 
 #include <glm/trigonometric.hpp>
 

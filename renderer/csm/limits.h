@@ -1,15 +1,10 @@
 #pragma once
-// Sizes the cascade math, the settings, the UI and the renderer agree on. Header-only, so the
-// settings library (which does not link st_csm) can use it too.
-#include "shaders/codes.h"
-
+// The bytes of shadow maps, which the storage layout, the UI and the renderer agree on.
+// (The most cascades a preset may ask for, kMaxCascades, is a limit of the settings: settings.h.)
 #include <algorithm>
 #include <cstddef>
 
 namespace st::csm {
-
-// The most cascades a preset may ask for; the shaders' arrays hold this many.
-inline constexpr int kMaxCascades = ST_MAX_CASCADES;
 
 // Bytes per shadow-map texel: the depth array is GL_DEPTH_COMPONENT32F (renderer/render/shadow_maps).
 inline constexpr std::size_t kShadowTexelBytes = 4;

@@ -1,8 +1,7 @@
 #include "renderer/csm/splits.h"
 
 #include "renderer/csm/error_text.h"
-#include "renderer/csm/limits.h"
-#include "renderer/csm/split_range.h"
+#include "renderer/settings/split_range.h"
 
 #include <cmath>
 #include <stdexcept>

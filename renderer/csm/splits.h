@@ -9,7 +9,7 @@ namespace st::csm {
 
 struct SplitParams {
     SplitScheme scheme = SplitScheme::Practical;
-    int count = 4;                 // number of cascades N, 1..kMaxCascades (csm/limits.h)
+    int count = 4;                 // number of cascades N, 1..kMaxCascades (settings.h)
     float nearPlane = 0.1f;        // camera near n, > 0
     float farPlane = 400.0f;       // camera far f, > n
     float lambda = 0.5f;           // practical blend, [0,1]; 1 = logarithmic, 0 = uniform

@@ -1,6 +1,5 @@
 #include "renderer/settings/field_table.h"
 
-#include "renderer/csm/limits.h"
 #include "renderer/settings/enum_names.h"
 
 #include <algorithm>
@@ -89,7 +88,7 @@ std::vector<FieldInfo> cascadeSplitRows() {
     return {
         {.path = "cascades.count", .label = "Cascades",
          .help = "More cascades spread shadow map resolution more evenly over depth, at one shadow pass each.",
-         .kind = K::Int, .min = 1, .max = csm::kMaxCascades, .step = 1, .change = C::Reallocate, .shader = "cascadeCount", ST_FIELD_ACCESS(cascades.count)},
+         .kind = K::Int, .min = 1, .max = kMaxCascades, .step = 1, .change = C::Reallocate, .shader = "cascadeCount", ST_FIELD_ACCESS(cascades.count)},
         {.path = "cascades.scheme", .label = "Split scheme",
          .help = "How the view depth range is divided: uniform, logarithmic, their lambda blend, or manual depths.",
          .kind = K::Enum, .enumNames = enumNames<SplitScheme>(), ST_FIELD_ACCESS(cascades.scheme)},

@@ -170,8 +170,11 @@ struct LightSettings {
     bool operator==(const LightSettings&) const = default;
 };
 
+// The most cascades a preset may ask for; the shaders' arrays hold this many.
+inline constexpr int kMaxCascades = ST_MAX_CASCADES;
+
 struct CascadeSettings {
-    int count = 4;                         // 1..csm::kMaxCascades (renderer/csm/limits.h)
+    int count = 4;                         // 1..kMaxCascades
     SplitScheme scheme = SplitScheme::Practical;
     float lambda = 0.5f;                   // seed 000: 1 = fully logarithmic, 0 = uniform
     std::vector<float> manualSplits;       // view-depth ends of cascades 0..count-2, metres, increasing

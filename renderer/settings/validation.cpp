@@ -1,8 +1,8 @@
 #include "renderer/settings/validation.h"
 
-#include "renderer/csm/split_range.h"
 #include "renderer/settings/enum_names.h"
 #include "renderer/settings/number_text.h"
+#include "renderer/settings/split_range.h"
 
 #include <cmath>
 #include <cstdint>
@@ -139,7 +139,7 @@ void checkManualSplits(const Settings& s, std::vector<SettingsIssue>& out) {
         return;
     }
     const bool byDistance = c.shadowDistance > 0.0f;
-    const float end = csm::splitRangeEnd(s.camera, c);
+    const float end = splitRangeEnd(s.camera, c);
     const std::string interval = std::string("(camera.nearPlane, ") +
                                  (byDistance ? "cascades.shadowDistance" : "camera.farPlane") + ") = (" +
                                  formatFloat(s.camera.nearPlane) + ", " + formatFloat(end) + ")";

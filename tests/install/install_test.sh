@@ -26,7 +26,7 @@ check "no test or fuzz files anywhere" bash -c "! find '$P' -iname '*test*' -o -
 for f in share/shadowtune/presets/default.json share/shadowtune/presets/scenes/fox.json \
          share/shadowtune/schema/preset.schema.json lib/cmake/shadowtune/shadowtuneConfig.cmake \
          lib/cmake/shadowtune/shadowtuneConfigVersion.cmake include/shadowtune/renderer/csm/splits.h \
-         include/shadowtune/renderer/settings/settings.h; do
+         include/shadowtune/renderer/settings/settings.h include/shadowtune/renderer/settings/split_range.h; do
   check "installed $f" test -s "$P/$f"
 done
 # Each installed preset's "$schema" resolves next to it.
