@@ -66,10 +66,10 @@ TEST_F(EditorSweepTest, RunEndsDoneWithEveryPointAndMarkedReferences) {
     ASSERT_TRUE(one && two && pa && current);
     EXPECT_TRUE(pa->reference && current->reference && !one->reference);
     // A is the live settings with count 2: the same frame as the grid's count=2 point.
-    EXPECT_DOUBLE_EQ(pa->errorPct, two->errorPct);
-    EXPECT_DOUBLE_EQ(pa->memoryMiB, two->memoryMiB);
-    EXPECT_DOUBLE_EQ(one->memoryMiB, 4.0);  // one 1024^2 layer of 32-bit depth
-    EXPECT_DOUBLE_EQ(current->memoryMiB, 16.0);
+    EXPECT_DOUBLE_EQ(pa->error, two->error);
+    EXPECT_DOUBLE_EQ(pa->memory, two->memory);
+    EXPECT_DOUBLE_EQ(one->memory, 4.0);  // one 1024^2 layer of 32-bit depth
+    EXPECT_DOUBLE_EQ(current->memory, 16.0);
     EXPECT_EQ(one->assignments, (std::vector<std::pair<std::string, std::string>>{{"cascades.count", "1"}}));
     bool hasCount = false;
     for (const auto& [path, value] : pa->assignments) hasCount |= path == "cascades.count" && value == "2";
