@@ -126,23 +126,23 @@ FigureTable makeTable() {
 
         {"cost.gpuShadowMs", "GPU shadow pass", FigureUnit::Ms, Better::Lower,
          [](const M& m) { return costOf(m, &CostReport::gpuShadowMs); }, "", "GPU shadow pass (ms, median)",
-         "GPU time of the shadow-map pass (timer query, median of the timed frames).", kEverywhere | InEditorSweep},
+         "GPU time of the shadow-map pass (timer query, median of the timed frames).", kEverywhere | InEditorSweep, true},
         {"cost.gpuFilterMs", "GPU filter passes", FigureUnit::Ms, Better::Lower,
          [](const M& m) { return costOf(m, &CostReport::gpuFilterMs); }, "", "GPU filter passes (ms, median)",
-         "GPU time of the filter's extra passes (moment maps and their blur, the screen-space path).", kEverywhere},
+         "GPU time of the filter's extra passes (moment maps and their blur, the screen-space path).", kEverywhere, true},
         {"cost.gpuMainMs", "GPU main pass", FigureUnit::Ms, Better::Lower,
          [](const M& m) { return costOf(m, &CostReport::gpuMainMs); }, "", "GPU main pass (ms, median)",
-         "GPU time of the main (shading) pass.", kEverywhere | InEditorSweep},
+         "GPU time of the main (shading) pass.", kEverywhere | InEditorSweep, true},
         {"cost.gpuMs", "GPU total", FigureUnit::Ms, Better::Lower,
          [](const M& m) {
              return m.cost ? Figure(m.cost->gpuShadowMs + m.cost->gpuFilterMs + m.cost->gpuMainMs) : std::nullopt;
          },
          "measured", "GPU time, shadow + filter + main (ms, median)",
          "Measured GPU time of the frame: shadow + filter + main pass medians.",
-         kEverywhere | CostChoice | InEditorSweep},
+         kEverywhere | CostChoice | InEditorSweep, true},
         {"cost.cpuMs", "CPU frame", FigureUnit::Ms, Better::Lower, [](const M& m) { return costOf(m, &CostReport::cpuMs); },
          "", "CPU time per frame (ms, median)", "CPU wall time of a frame's render call (median).",
-         kEverywhere | InEditorSweep},
+         kEverywhere | InEditorSweep, true},
         {"cost.shadowMapBytes", "shadow-map memory", FigureUnit::Bytes, Better::Lower,
          [](const M& m) { return costOf(m, &CostReport::shadowMapBytes); }, "", "shadow-map memory (MiB)",
          "Bytes of the shadow-map array (every cascade's layer).", kEverywhere},
@@ -325,7 +325,7 @@ std::string figuresMarkdown(const FigureTable& table) {
         }
         md += "| `" + r.key + "` | " + cell(r.label) + " | " + unitInfo(r.unit).name + " | " + betterName(r.better) +
               " | " + (r.choice.empty() ? "" : "`" + r.choice + "`") + " | " + whereShown(r) + " | " +
-              cell(r.description) + " |\n";
+              cell(r.description) + (r.timing ? " Measured: differs between runs." : "") + " |\n";
     }
     return md;
 }

@@ -46,6 +46,7 @@ struct FigureRow {
     std::string axisTitle;    // chart axis: "misclassified (% of sun-facing pixels)"
     std::string description;  // one line, for docs and hover texts
     unsigned shows = 0;       // Shows flags
+    bool timing = false;      // a measured time: differs between runs (every other figure is repeatable)
     bool has(Shows s) const { return (shows & s) != 0; }
 };
 

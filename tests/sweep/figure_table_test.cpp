@@ -108,6 +108,7 @@ TEST(FigureTableTest, RowsAreCompleteAndNamesUnique) {
         if (r.has(metrics::ErrorChoice)) EXPECT_TRUE(errors.insert(r.choice).second && !r.choice.empty());
         if (r.has(metrics::CostChoice)) EXPECT_TRUE(costs.insert(r.choice).second && !r.choice.empty());
         EXPECT_TRUE(r.choice.empty() || r.has(metrics::ErrorChoice) || r.has(metrics::CostChoice));
+        EXPECT_TRUE(!r.timing || r.unit == FigureUnit::Ms) << "only measured times vary between runs";
     }
     // The names `sweep --error` took before the table keep working.
     for (const char* name : {"misclassified", "filtered", "flicker", "soft-filtered", "acne", "light-bleeding",

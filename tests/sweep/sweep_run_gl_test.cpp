@@ -38,7 +38,7 @@ protected:
         for (const PointResult& r : results) {
             Figures& f = out[r.id];
             for (const auto& [k, v] : r.figures)
-                if (!k.ends_with("_ms")) f.push_back({k, v});
+                if (!metrics::findFigure(k)->timing) f.push_back({k, v});
         }
         return out;
     }
