@@ -40,6 +40,26 @@ const ui::SweepPoint* find(const ui::SweepView& v, const std::string& label) {
     return nullptr;
 }
 
+// A point as the chart shows it: the default error and cost choices of the figure table, in
+// their display units, and one hover line per Sweep-panel row.
+TEST(EditorSweepChartTest, PointShowsTheTablesChoicesInTheirUnits) {
+    metrics::PresetMeasurement m;
+    m.accuracy.all.receivers = 400;
+    m.accuracy.all.falseShadowEdge = 6;  // 1.5 %
+    m.cost = metrics::CostReport{};
+    m.cost->gpuShadowMs = 2.0, m.cost->gpuMainMs = 3.0, m.cost->gpuFilterMs = 0.5;
+    m.cost->shadowMapBytes = 8u << 20, m.cost->filterMapBytes = 2u << 20;
+    sweep::PointResult r{"1", "count=1", false, {"1"}, toOrderedJson(Settings{}), sweep::figuresOf(m)};
+    const ui::SweepPoint p = chartPoint(r, {"cascades.count"});
+    EXPECT_DOUBLE_EQ(p.error, 1.5);
+    EXPECT_DOUBLE_EQ(p.cost, 5.5);
+    EXPECT_DOUBLE_EQ(p.memory, 10.0);
+    for (const metrics::FigureRow* row : metrics::figuresShown(metrics::InEditorSweep))
+        EXPECT_NE(p.figures.find(row->label + " " + metrics::formatValue(row->unit, row->read(m))), std::string::npos)
+            << row->key << " in\n" << p.figures;
+    EXPECT_NE(p.figures.find("misclassified 1.500 %"), std::string::npos) << p.figures;
+}
+
 class EditorSweepTest : public ::testing::Test {
 protected:
     void TearDown() override {
