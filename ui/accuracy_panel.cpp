@@ -107,7 +107,6 @@ void softFigures(UiFrame& f) {
 
 void figures(UiFrame& f) {
     const AccuracyView& a = f.in.accuracy;
-    ImGui::Text("%zu sun-facing px measured:", a.all.receivers);
     figureLines(a, false);
     recordItem(f.state.rects, "accuracy.figures");
     drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
