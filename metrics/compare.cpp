@@ -46,8 +46,9 @@ std::string padColumns(const std::string& s, std::size_t width, bool right) {
     return pad(s, width + (s.size() - columns(s)), right);
 }
 
-std::string row(const std::string& label, const std::string& a, const std::string& b, const std::string& delta) {
-    return padColumns(label, 20, false) + padColumns(a, 14, true) + padColumns(b, 14, true) +
+std::string row(std::size_t labelWidth, const std::string& label, const std::string& a, const std::string& b,
+                const std::string& delta) {
+    return padColumns(label, labelWidth, false) + padColumns(a, 14, true) + padColumns(b, 14, true) +
            padColumns(delta, 14, true) + "\n";
 }
 
@@ -105,9 +106,11 @@ std::string compareTable(const CompareNames& names, const std::vector<CompareFig
     std::string t = "A = " + names.a + ", B = " + names.b +
                     (names.sharedView ? " (B's cascades, filter and bias on A's scene, camera and light)\n"
                                       : " (each with its own scene, camera and light)\n");
-    t += row("figure", "A", "B", "B − A");
+    std::size_t width = 20;  // the longest label and a space
+    for (const CompareFigure& f : figures) width = std::max(width, columns(f.label) + 1);
+    t += row(width, "figure", "A", "B", "B − A");
     for (const CompareFigure& f : figures)
-        t += row(f.label, formatValue(f.unit, f.a), formatValue(f.unit, f.b), formatDelta(f.unit, f.delta()));
+        t += row(width, f.label, formatValue(f.unit, f.a), formatValue(f.unit, f.b), formatDelta(f.unit, f.delta()));
     if (diff) t += diffLine(*diff);
     return t;
 }
