@@ -91,11 +91,12 @@ Strip headline(const Side& side, const std::vector<metrics::CompareFigure>& figu
     };
     char gpu[64];
     std::snprintf(gpu, sizeof gpu, "GPU shadow %.2f + main %.2f ms", raw("cost.gpuShadowMs"), raw("cost.gpuMainMs"));
+    const auto line = [&](const std::string& key) { return find(key).label + " " + text(key); };
     return {{side.tag + ": " + side.name, std::nullopt, true},
-            {"misclassified " + text("accuracy.misclassified")},
-            {"filtered error " + text("accuracy.filteredError")},
+            {line("accuracy.misclassified")},
+            {line("accuracy.filteredError")},
             {gpu},
-            {"shadow maps " + text("cost.shadowMapBytes")}};
+            {line("cost.shadowMapBytes")}};
 }
 
 bool sameView(const Settings& a, const Settings& b) {

@@ -1,5 +1,6 @@
 #include "app/editor_accuracy.h"
 
+#include "metrics/figure_table.h"
 #include "metrics/map_warnings.h"
 #include "metrics/measure_session.h"
 
@@ -35,6 +36,19 @@ std::string percent(double share) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3f%%", 100.0 * share);
     return text;
+}
+
+// The figure table's Accuracy-panel rows of a still measurement (no density, flicker or cost: the
+// rows shown there read only the accuracy and the soft accuracy).
+std::vector<ui::FigureLine> figureLines(const metrics::StillAccuracy& a) {
+    metrics::PresetMeasurement m;
+    m.accuracy.all = a.report.all;
+    m.soft.all = a.soft.all;
+    m.soft.penumbra = a.soft.penumbra;
+    std::vector<ui::FigureLine> out;
+    for (const metrics::FigureValue& f : metrics::readFigures(m, metrics::InEditorAccuracy))
+        out.push_back({f.row->key, f.row->label, metrics::formatValue(f.row->unit, f.value), f.row->description});
+    return out;
 }
 
 // The wasted-map warnings of the frame read back (the same rule and limits as `render`).
@@ -115,6 +129,7 @@ void EditorAccuracy::collect() {
     const metrics::ArtifactCounts& k = a.soft.all;
     view_.soft = {sun_.angularDiameter, sun_.rays, k.receivers, k.filteredError(), k.acne, k.lightBleeding,
                   k.peterPanning, k.missingCaster, k.edge, a.soft.penumbra.truthPx, a.soft.penumbra.filteredPx};
+    view_.figures = figureLines(a);
     overlay_.upload(a.overlay.width, a.overlay.height, a.overlay.pixels);
     classes_ = a.report.classes;
     schedule_.finished(true);

@@ -53,18 +53,14 @@ std::vector<std::string> lastLines(const fs::path& file, std::size_t count) {
     return lines;
 }
 
-std::string figureLines(const sweep::PointResult& r) {
-    char text[512];
-    std::snprintf(text, sizeof text,
-                  "misclassified %.3f %% (false shadow %.3f %%, false light %.3f %%, gross %.3f %%)\n"
-                  "filtered error %.4f\n"
-                  "GPU %.2f ms (shadow %.2f + main %.2f), CPU %.2f ms\n"
-                  "shadow-map memory %.1f MiB, caster triangles %.0f\n"
-                  "texel density median %.2f px/texel, aliased %.1f %%",
-                  r.figure("misclassified_pct"), r.figure("false_shadow_pct"), r.figure("false_light_pct"),
-                  r.figure("gross_pct"), r.figure("filtered_error"), r.figure("gpu_ms"), r.figure("gpu_shadow_ms"),
-                  r.figure("gpu_main_ms"), r.figure("cpu_ms"), r.figure("shadow_map_mib"), r.figure("caster_triangles"),
-                  r.figure("density_median_px_per_texel"), r.figure("aliased_pct"));
+// The hover text: the figure table's Sweep-panel rows, one "label value" line each.
+std::string figureLines(const sweep::PointResult& r, const metrics::FigureTable& table) {
+    std::string text;
+    for (const metrics::FigureRow* row : metrics::figuresShown(metrics::InEditorSweep, table)) {
+        const double v = r.figure(row->key);
+        text += (text.empty() ? "" : "\n") + row->label + " " +
+                metrics::formatValue(row->unit, std::isfinite(v) ? std::optional<double>(v) : std::nullopt);
+    }
     return text;
 }
 
@@ -118,10 +114,12 @@ ui::SweepPoint chartPoint(const sweep::PointResult& r, const std::vector<std::st
     ui::SweepPoint p;
     p.label = r.label;
     p.reference = r.reference;
-    p.gpuMs = r.figure("gpu_ms");
-    p.memoryMiB = r.figure("shadow_map_mib");
-    p.errorPct = r.figure("misclassified_pct");
-    p.figures = figureLines(r);
+    const sweep::ReportOptions chosen;  // the chart's figures: those `shadowtune sweep` charts by default
+    const auto shown = [&](const metrics::FigureRow& row) { return metrics::shown(row.unit, r.figure(row.key)); };
+    p.cost = shown(sweep::costFigure(chosen.cost));
+    p.memory = shown(sweep::costFigure(sweep::kMemoryChoice));
+    p.error = shown(sweep::errorFigure(chosen.error));
+    p.figures = figureLines(r, metrics::figureTable());
     if (r.reference) {
         p.assignments = methodAssignments(r.settings);
     } else {
@@ -137,8 +135,8 @@ std::vector<ui::SweepPoint> chartPoints(const std::vector<sweep::PointResult>& r
     std::vector<std::pair<double, double>> byTime, byMemory;
     for (const sweep::PointResult& r : results) {
         points.push_back(chartPoint(r, axisFields));
-        byTime.push_back({points.back().gpuMs, points.back().errorPct});
-        byMemory.push_back({points.back().memoryMiB, points.back().errorPct});
+        byTime.push_back({points.back().cost, points.back().error});
+        byMemory.push_back({points.back().memory, points.back().error});
     }
     const std::vector<bool> t = report::paretoFront(byTime), m = report::paretoFront(byMemory);
     for (std::size_t i = 0; i < points.size(); ++i) points[i].frontByTime = t[i], points[i].frontByMemory = m[i];
@@ -168,6 +166,12 @@ void EditorSweep::start(const ui::SweepRequest& request, const Settings& live, c
                         const fs::path& presetDir) {
     if (running()) return;
     view_ = {};
+    const sweep::ReportOptions chosen;
+    const metrics::FigureRow& cost = sweep::costFigure(chosen.cost);
+    view_.costTitle = cost.axisTitle;
+    view_.costName = cost.label;
+    view_.memoryTitle = sweep::costFigure(sweep::kMemoryChoice).axisTitle;
+    view_.errorTitle = sweep::errorFigure(chosen.error).axisTitle;
     view_.width = request.width;
     view_.height = request.height;
     view_.scene = live.scene;

@@ -19,6 +19,9 @@ void addSweepCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--error", opt->error, "Error figure of the charts and the front")
         ->check(CLI::IsMember(sweep::errorChoices()))
         ->capture_default_str();
+    cmd->add_option("--cost", opt->cost, "Cost figure of the Pareto chart and the front (measured: GPU time)")
+        ->check(CLI::IsMember(sweep::costChoices()))
+        ->capture_default_str();
     cmd->add_option("--stop-after", opt->stopAfter, "Measure at most N new points, then stop as Ctrl-C would")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--frames", opt->costFrames, "Timed frames per point for the cost figures (after one warm-up)")

@@ -73,8 +73,9 @@ int runOnce(const sweep::SweepSpec& spec, sweep::RunOptions ro, bool debugGl) {
 
 int runSweepCommand(const SweepCommandOptions& opt) {
     try {
-        sweep::ReportOptions report{opt.error};
-        sweep::errorKey(opt.error);  // refuse a bad --error before any work
+        sweep::ReportOptions report{opt.error, opt.cost};
+        sweep::errorFigure(opt.error);  // refuse a bad --error or --cost before any work
+        sweep::costFigure(opt.cost);
         if (!opt.merge.empty()) {
             const std::size_t n = sweep::mergeSweeps(opt.merge, opt.outDir, report);
             std::printf("merged %zu shard folders: %zu points in %s\n", opt.merge.size(), n, opt.outDir.string().c_str());

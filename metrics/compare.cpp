@@ -8,68 +8,13 @@
 namespace st::metrics {
 namespace {
 using OJson = nlohmann::ordered_json;
-using Figure = std::optional<double>;
-using Pick = Figure (*)(const PresetMeasurement&);
-
-struct FigureRow {
-    const char* key;
-    const char* label;
-    FigureUnit unit;
-    Pick pick;
-};
-
-const ErrorCounts& errors(const PresetMeasurement& m) { return m.accuracy.all; }
-Figure cost(const PresetMeasurement& m, double CostReport::*field) {
-    return m.cost ? Figure((*m.cost).*field) : std::nullopt;
-}
-
-constexpr FigureRow kRows[] = {
-    {"accuracy.misclassified", "misclassified", FigureUnit::Share,
-     [](const PresetMeasurement& m) -> Figure { return errors(m).share(errors(m).misclassified()); }},
-    {"accuracy.falseShadow", "false shadow", FigureUnit::Share,
-     [](const PresetMeasurement& m) -> Figure { return errors(m).share(errors(m).falseShadow()); }},
-    {"accuracy.falseLight", "false light", FigureUnit::Share,
-     [](const PresetMeasurement& m) -> Figure { return errors(m).share(errors(m).falseLight()); }},
-    {"accuracy.edgeBand", "edge band errors", FigureUnit::Share,
-     [](const PresetMeasurement& m) -> Figure {
-         return errors(m).share(errors(m).falseShadowEdge + errors(m).falseLightEdge);
-     }},
-    {"accuracy.gross", "gross errors", FigureUnit::Share,
-     [](const PresetMeasurement& m) -> Figure { return errors(m).share(errors(m).gross()); }},
-    {"accuracy.filteredError", "filtered error", FigureUnit::Error,
-     [](const PresetMeasurement& m) -> Figure { return errors(m).filteredError(); }},
-    {"texelDensity.median", "px/texel median", FigureUnit::PxPerTexel,
-     [](const PresetMeasurement& m) -> Figure { return m.density.all.median; }},
-    {"texelDensity.p90", "px/texel p90", FigureUnit::PxPerTexel,
-     [](const PresetMeasurement& m) -> Figure { return m.density.all.p90; }},
-    {"texelDensity.p95", "px/texel p95", FigureUnit::PxPerTexel,
-     [](const PresetMeasurement& m) -> Figure { return m.density.all.p95; }},
-    {"flicker.flipRate", "flicker F", FigureUnit::Share,
-     [](const PresetMeasurement& m) -> Figure { return m.flicker ? Figure(m.flicker->flipRate) : std::nullopt; }},
-    {"cost.gpuShadowMs", "GPU shadow pass", FigureUnit::Ms,
-     [](const PresetMeasurement& m) { return cost(m, &CostReport::gpuShadowMs); }},
-    {"cost.gpuMainMs", "GPU main pass", FigureUnit::Ms,
-     [](const PresetMeasurement& m) { return cost(m, &CostReport::gpuMainMs); }},
-    {"cost.shadowMapBytes", "shadow-map memory", FigureUnit::Bytes,
-     [](const PresetMeasurement& m) -> Figure { return m.cost ? Figure(double(m.cost->shadowMapBytes)) : std::nullopt; }},
-    {"cost.casterTriangles", "caster triangles", FigureUnit::Count,
-     [](const PresetMeasurement& m) -> Figure { return m.cost ? Figure(double(m.cost->triangles)) : std::nullopt; }},
-};
-
-OJson figureJson(FigureUnit unit, Figure v) {
-    if (!v) return nullptr;
-    if (unit == FigureUnit::Bytes || unit == FigureUnit::Count) return static_cast<long long>(std::llround(*v));
-    return *v;
-}
 
 // {"accuracy": {"misclassified": ...}, ...} from the figures' dotted keys.
 template <class Value>
 OJson nested(const std::vector<CompareFigure>& figures, Value value) {
     OJson j = OJson::object();
     for (const CompareFigure& f : figures) {
-        std::string pointer = "/" + f.key;
-        std::replace(pointer.begin(), pointer.end(), '.', '/');
-        j[OJson::json_pointer(pointer)] = figureJson(f.unit, value(f));
+        j[OJson::json_pointer(jsonPointer(f.key))] = figureJson(f.unit, value(f));
     }
     return j;
 }
@@ -101,8 +46,9 @@ std::string padColumns(const std::string& s, std::size_t width, bool right) {
     return pad(s, width + (s.size() - columns(s)), right);
 }
 
-std::string row(const std::string& label, const std::string& a, const std::string& b, const std::string& delta) {
-    return padColumns(label, 20, false) + padColumns(a, 14, true) + padColumns(b, 14, true) +
+std::string row(std::size_t labelWidth, const std::string& label, const std::string& a, const std::string& b,
+                const std::string& delta) {
+    return padColumns(label, labelWidth, false) + padColumns(a, 14, true) + padColumns(b, 14, true) +
            padColumns(delta, 14, true) + "\n";
 }
 
@@ -114,9 +60,11 @@ std::string diffLine(const ShadowDiff& d) {
 
 }  // namespace
 
-std::vector<CompareFigure> compareFigures(const PresetMeasurement& a, const PresetMeasurement& b) {
+std::vector<CompareFigure> compareFigures(const PresetMeasurement& a, const PresetMeasurement& b,
+                                          const FigureTable& table) {
     std::vector<CompareFigure> figures;
-    for (const FigureRow& r : kRows) figures.push_back({r.key, r.label, r.unit, r.pick(a), r.pick(b)});
+    for (const FigureRow* r : figuresShown(InCompare, table))
+        figures.push_back({r->key, r->label, r->unit, r->read(a), r->read(b)});
     return figures;
 }
 
@@ -153,42 +101,16 @@ OJson compareJson(const CompareNames& names, const std::vector<CompareFigure>& f
     return j;
 }
 
-std::string formatValue(FigureUnit unit, std::optional<double> v) {
-    if (!v) return "-";
-    switch (unit) {
-    case FigureUnit::Share: return printf1("%.3f %%", 100.0 * *v);
-    case FigureUnit::Error: return printf1("%.4f", *v);
-    case FigureUnit::PxPerTexel: return printf1("%.2f", *v);
-    case FigureUnit::Ms: return printf1("%.2f ms", *v);
-    case FigureUnit::Bytes: return printf1("%.1f MiB", *v / (1024.0 * 1024.0));
-    case FigureUnit::Count: return printf1("%.0f", *v);
-    }
-    return "?";
-}
-
-std::string formatDelta(FigureUnit unit, std::optional<double> d) {
-    if (!d) return "-";
-    const char* suffix[] = {" pp", "", "", " ms", " MiB", ""};
-    if (*d == 0.0) return std::string("±0") + suffix[int(unit)];
-    switch (unit) {
-    case FigureUnit::Share: return printf1("%+.3f pp", 100.0 * *d);
-    case FigureUnit::Error: return printf1("%+.4f", *d);
-    case FigureUnit::PxPerTexel: return printf1("%+.2f", *d);
-    case FigureUnit::Ms: return printf1("%+.2f ms", *d);
-    case FigureUnit::Bytes: return printf1("%+.1f MiB", *d / (1024.0 * 1024.0));
-    case FigureUnit::Count: return printf1("%+.0f", *d);
-    }
-    return "?";
-}
-
 std::string compareTable(const CompareNames& names, const std::vector<CompareFigure>& figures,
                          const std::optional<ShadowDiff>& diff) {
     std::string t = "A = " + names.a + ", B = " + names.b +
                     (names.sharedView ? " (B's cascades, filter and bias on A's scene, camera and light)\n"
                                       : " (each with its own scene, camera and light)\n");
-    t += row("figure", "A", "B", "B − A");
+    std::size_t width = 20;  // the longest label and a space
+    for (const CompareFigure& f : figures) width = std::max(width, columns(f.label) + 1);
+    t += row(width, "figure", "A", "B", "B − A");
     for (const CompareFigure& f : figures)
-        t += row(f.label, formatValue(f.unit, f.a), formatValue(f.unit, f.b), formatDelta(f.unit, f.delta()));
+        t += row(width, f.label, formatValue(f.unit, f.a), formatValue(f.unit, f.b), formatDelta(f.unit, f.delta()));
     if (diff) t += diffLine(*diff);
     return t;
 }

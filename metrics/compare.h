@@ -1,6 +1,7 @@
 #pragma once
 // Two measurements side by side (`shadowtune compare`): the headline figures of each, their
 // deltas B - A, and where the two unfiltered shadow tests disagree. Pure: no GL, no files.
+#include "metrics/figure_table.h"
 #include "metrics/measure_session.h"
 #include "renderer/render/measure_samples.h"
 
@@ -14,10 +15,6 @@
 
 namespace st::metrics {
 
-// How a figure is printed: shares as % (deltas in percentage points), times in ms, memory in
-// MiB; JSON always holds the raw value (a share as a fraction, bytes as bytes).
-enum class FigureUnit { Share, Error, PxPerTexel, Ms, Bytes, Count };
-
 struct CompareFigure {
     std::string key;    // its path in compare.json, e.g. "accuracy.misclassified"
     std::string label;  // its name in the terminal table
@@ -26,10 +23,9 @@ struct CompareFigure {
     std::optional<double> delta() const { return a && b ? std::optional<double>(*b - *a) : std::nullopt; }
 };
 
-// Accuracy (misclassified, false shadow, false light, edge band, gross, filtered error),
-// texel density (median, p90, p95), flicker F, cost (GPU shadow and main ms, shadow-map bytes,
-// caster triangles), in that order.
-std::vector<CompareFigure> compareFigures(const PresetMeasurement& a, const PresetMeasurement& b);
+// The rows of `table` shown in compare (Shows::InCompare), in table order.
+std::vector<CompareFigure> compareFigures(const PresetMeasurement& a, const PresetMeasurement& b,
+                                          const FigureTable& table = figureTable());
 
 // One pixel of the two unfiltered shadow tests (MeasureSamples::shadow.x) of the same view.
 enum class DiffClass : std::uint8_t { Unscored, Neither, Both, OnlyA, OnlyB };
@@ -61,10 +57,6 @@ nlohmann::ordered_json compareJson(const CompareNames& names, const std::vector<
 // The table printed on the terminal: one row per figure, A, B and B - A with units and signs.
 std::string compareTable(const CompareNames& names, const std::vector<CompareFigure>& figures,
                          const std::optional<ShadowDiff>& diff);
-
-// "1.234 %", "0.0123", "1.25 ms", "16.0 MiB", ...: a value as the table prints it; "-" if absent.
-std::string formatValue(FigureUnit unit, std::optional<double> value);
-// The same for a delta, always signed ("+0.512 pp", "-3.00 ms"); exactly zero is "±0".
-std::string formatDelta(FigureUnit unit, std::optional<double> delta);
+// formatValue / formatDelta (metrics/figure_table.h) print each cell.
 
 }  // namespace st::metrics

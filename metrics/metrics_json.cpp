@@ -116,9 +116,19 @@ OJson timingsJson(const MeasureTimings& t) {
                  {"costMs", t.costMs},       {"flickerMs", t.flickerMs},         {"totalMs", t.totalMs}};
 }
 
+// The table's figures at their paths. An absent figure whose section is absent (flicker without
+// a path: "flicker": null) stays absent; one inside a present section is null.
+void setFigures(OJson& j, const PresetMeasurement& m, const FigureTable& table) {
+    for (const FigureValue& f : readFigures(m, InMetricsJson, table)) {
+        const OJson::json_pointer at(jsonPointer(f.row->key));
+        if (!f.value && (!j.contains(at.parent_pointer()) || !j.at(at.parent_pointer()).is_object())) continue;
+        j[at] = figureJson(f.row->unit, f.value);
+    }
+}
+
 }  // namespace
 
-OJson toJson(const PresetMeasurement& m, const std::string& presetName) {
+OJson toJson(const PresetMeasurement& m, const std::string& presetName, const FigureTable& table) {
     OJson j{{"preset", presetName},
             {"scene", m.settings.scene},
             {"width", m.samples.width},
@@ -133,6 +143,7 @@ OJson toJson(const PresetMeasurement& m, const std::string& presetName) {
             {"frame", OJson::parse(toJsonText(m.frame))},
             {"warnings", m.warnings},
             {"timings", timingsJson(m.timings)}};
+    setFigures(j, m, table);
     return j;
 }
 

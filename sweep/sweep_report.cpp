@@ -22,6 +22,16 @@ std::string number(double v) {
     return text;
 }
 
+// A raw figure in the CSV: counts and bytes whole, others to six significant digits.
+std::string number(metrics::FigureUnit unit, double v) {
+    if (std::isfinite(v) && (unit == metrics::FigureUnit::Count || unit == metrics::FigureUnit::Bytes)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.0f", v);
+        return text;
+    }
+    return number(v);
+}
+
 std::string short3(double v) {  // table cells: three significant digits
     if (!std::isfinite(v)) return "-";
     char text[32];
@@ -36,16 +46,18 @@ std::string csvField(const std::string& text) {
     return out + "\"";
 }
 
-void writeCsv(const fs::path& file, const Manifest& m, const std::vector<PointResult>& results) {
+// Columns: the point, its axis values, then the table's sweep figures in table order (raw values).
+void writeCsv(const fs::path& file, const Manifest& m, const std::vector<PointResult>& results,
+              const metrics::FigureTable& table) {
+    const std::vector<const metrics::FigureRow*> rows = metrics::figuresShown(metrics::InSweep, table);
     std::string text = "id,kind,label";
     for (const std::string& f : m.axisFields) text += "," + f;
-    if (!results.empty())
-        for (const auto& [k, v] : results.front().figures) text += "," + k;
+    for (const metrics::FigureRow* row : rows) text += "," + row->key;
     text += "\n";
     for (const PointResult& r : results) {
         text += r.id + "," + (r.reference ? "reference" : "grid") + "," + csvField(r.label);
         for (const std::string& v : r.axisValues) text += "," + csvField(unquoted(v));
-        for (const auto& [k, v] : r.figures) text += "," + number(v);
+        for (const metrics::FigureRow* row : rows) text += "," + number(row->unit, r.figure(row->key));
         text += "\n";
     }
     writeTextAtomic(file, text);
@@ -71,46 +83,33 @@ std::vector<bool> frontOf(const std::vector<PointResult>& results, const std::st
     return report::paretoFront(xy);
 }
 
-// A column header or title word for a figure key: "GPU ms", "misclassified %".
-std::string shortName(const std::string& key) {
-    if (key == "gpu_ms") return "GPU ms";
-    if (key == "shadow_map_mib") return "map MiB";
-    if (key == "misclassified_pct") return "misclassified %";
-    if (key == "flicker_F_pct") return "flicker F %";
-    if (key == "filtered_error") return "filtered error";
-    if (key == "soft_filtered_error") return "filtered error vs the sun's disc";
-    if (key == "penumbra_width_abs_error_px") return "penumbra width error px";
-    if (key.ends_with("_pct")) {
-        std::string name = key.substr(0, key.size() - 4);
-        for (char& c : name)
-            if (c == '_') c = ' ';
-        return name + " %";
-    }
-    return key;
+// A point's figure as charts show it (a share in %, bytes in MiB); NaN if absent.
+double shownFigure(const PointResult& r, const metrics::FigureRow& row) {
+    return metrics::shown(row.unit, r.figure(row.key));
 }
 
-report::ScatterChart scatter(const Manifest& m, const std::vector<PointResult>& results, const std::string& xKey,
-                             const std::string& xLabel, const std::string& yKey, const std::string& yLabel) {
-    const std::string xShort = shortName(xKey), yShort = shortName(yKey);
+report::ScatterChart scatter(const Manifest& m, const std::vector<PointResult>& results, const metrics::FigureRow& x,
+                             const metrics::FigureRow& y) {
+    const std::string xShort = shortName(x), yShort = shortName(y);
     report::ScatterChart c;
     c.title = "sweep " + m.sweep + ", " + std::to_string(m.width) + "x" + std::to_string(m.height) + ": " + yShort +
               " against " + xShort;
     c.subtitle = std::to_string(results.size()) + " points, scene " + fs::path(m.scene).filename().string() + "; " +
                  machineLine(m);
-    c.xLabel = xLabel;
-    c.yLabel = yLabel;
+    c.xLabel = x.axisTitle;
+    c.yLabel = y.axisTitle;
     c.logY = true;
-    const std::vector<bool> front = frontOf(results, xKey, yKey);
+    const std::vector<bool> front = frontOf(results, x.key, y.key);
     c.tableHeader = {"front point", xShort, yShort};
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < results.size(); ++i) {
         const PointResult& r = results[i];
-        c.points.push_back({r.figure(xKey), r.figure(yKey), r.label, front[i], r.reference});
+        c.points.push_back({shownFigure(r, x), shownFigure(r, y), r.label, front[i], r.reference});
         if (front[i]) order.push_back(i);
     }
-    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return results[a].figure(xKey) < results[b].figure(xKey); });
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return results[a].figure(x.key) < results[b].figure(x.key); });
     for (const std::size_t i : order)
-        c.tableRows.push_back({results[i].label, short3(results[i].figure(xKey)), short3(results[i].figure(yKey))});
+        c.tableRows.push_back({results[i].label, short3(shownFigure(results[i], x)), short3(shownFigure(results[i], y))});
     return c;
 }
 
@@ -129,25 +128,25 @@ std::vector<const PointResult*> alongAxis(const Manifest& m, const std::vector<P
     return line;
 }
 
+// Per axis, the error, the cost and the memory along it (each figure once).
 void writeAxisCharts(const fs::path& dir, const Manifest& m, const std::vector<PointResult>& results,
-                     const std::string& yKey, const std::string& yLabel) {
-    const std::vector<std::pair<std::string, std::string>> figures = {{yKey, yLabel}, {"gpu_ms", "GPU time, shadow + main (ms)"},
-                                                                      {"shadow_map_mib", "shadow-map memory (MiB)"}};
+                     const std::vector<const metrics::FigureRow*>& figures) {
     for (std::size_t a = 0; a < m.axisFields.size(); ++a) {
         const auto line = alongAxis(m, results, a);
         std::string held;
         for (std::size_t b = 0; b < m.axisFields.size(); ++b)
             if (b != a) held += (held.empty() ? "others at " : ", ") + m.axisFields[b] + "=" + unquoted(m.baseValues[b]);
-        for (const auto& [key, label] : figures) {
+        for (const metrics::FigureRow* row : figures) {
+            const std::string& key = row->key;
             report::LineChart c;
             c.title = m.sweep + ": " + key + " against " + m.axisFields[a];
             c.subtitle = held.empty() ? machineLine(m) : held + "; " + machineLine(m);
             c.xLabel = m.axisFields[a];
-            c.yLabel = label;
+            c.yLabel = row->axisTitle;
             for (const std::string& v : m.axisValues[a]) c.xTickLabels.push_back(unquoted(v));
             report::Series s{key, {}, {}};
             for (std::size_t i = 0; i < line.size(); ++i)
-                if (line[i] && std::isfinite(line[i]->figure(key))) s.x.push_back(double(i)), s.y.push_back(line[i]->figure(key));
+                if (line[i] && std::isfinite(line[i]->figure(key))) s.x.push_back(double(i)), s.y.push_back(shownFigure(*line[i], *row));
             c.series.push_back(s);
             const std::string stem = "axis-" + m.axisFields[a] + "-" + key;
             report::writeLineChart(c, dir / (stem + ".png"), fs::path());
@@ -155,18 +154,9 @@ void writeAxisCharts(const fs::path& dir, const Manifest& m, const std::vector<P
     }
 }
 
-std::string yLabelOf(const std::string& key) {
-    if (key == "filtered_error") return "filtered error (mean |filtered - truth|)";
-    if (key == "flicker_F_pct") return "flicker F (% of sun-facing pixels per frame)";
-    if (key == "soft_filtered_error") return "filtered error against the sun's disc (mean |filtered - soft truth|)";
-    if (key == "penumbra_width_abs_error_px") return "penumbra width error (|filtered - true| mean width, px)";
-    if (key == "acne_pct" || key == "light_bleeding_pct" || key == "peter_panning_pct" || key == "missing_caster_pct")
-        return shortName(key) + " of sun-facing pixels (filtered, against the sun's disc)";
-    return "misclassified (% of sun-facing pixels)";
-}
-
 std::vector<std::string> writeFront(const fs::path& dir, const Manifest& m, const std::vector<PointResult>& results,
-                                    const std::vector<bool>& front, const std::string& yKey) {
+                                    const std::vector<bool>& front, const metrics::FigureRow& cost,
+                                    const metrics::FigureRow& error) {
     std::error_code ec;
     fs::create_directories(dir / "front", ec);
     if (ec) throw std::runtime_error((dir / "front").string() + ": cannot create folder: " + ec.message());
@@ -180,7 +170,8 @@ std::vector<std::string> writeFront(const fs::path& dir, const Manifest& m, cons
         s.notes = "Pareto front point of sweep " + m.sweep + ": " + r.label;
         savePresetAtomic(s, preset);
         list.push_back({{"id", r.id}, {"label", r.label}, {"preset", "front/" + r.id + ".json"},
-                        {"gpu_ms", r.figure("gpu_ms")}, {yKey, r.figure(yKey)}});
+                        {cost.key, metrics::figureJson(cost.unit, r.figure(cost.key))},
+                        {error.key, metrics::figureJson(error.unit, r.figure(error.key))}});
         ids.push_back(r.id);
     }
     writeTextAtomic(dir / "front.json", list.dump(2) + "\n");
@@ -190,22 +181,23 @@ std::vector<std::string> writeFront(const fs::path& dir, const Manifest& m, cons
 }  // namespace
 
 std::vector<std::string> writeReport(const fs::path& dir, const Manifest& m, const std::vector<PointResult>& results,
-                                     const ReportOptions& opt) {
-    const std::string yKey = errorKey(opt.error);
-    const std::string yLabel = yLabelOf(yKey);
+                                     const ReportOptions& opt, const metrics::FigureTable& table) {
+    const metrics::FigureRow& error = errorFigure(opt.error, table);
+    const metrics::FigureRow& cost = costFigure(opt.cost, table);
+    const metrics::FigureRow& memory = costFigure(kMemoryChoice, table);
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw std::runtime_error(dir.string() + ": cannot create output folder: " + ec.message());
-    writeCsv(dir / "results.csv", m, results);
+    writeCsv(dir / "results.csv", m, results, table);
     nlohmann::ordered_json all = {{"manifest", toJson(m)}, {"points", nlohmann::ordered_json::array()}};
     for (const PointResult& r : results) all["points"].push_back(toJson(r));
     writeTextAtomic(dir / "results.json", all.dump(2) + "\n");
-    const std::string timeLabel = "GPU time, shadow + main (ms, median)";
-    report::writeScatterChart(scatter(m, results, "gpu_ms", timeLabel, yKey, yLabel), dir / "pareto.png", dir / "pareto.svg");
-    report::writeScatterChart(scatter(m, results, "shadow_map_mib", "shadow-map memory (MiB)", yKey, yLabel),
-                              dir / "pareto-memory.png", dir / "pareto-memory.svg");
-    writeAxisCharts(dir, m, results, yKey, yLabel);
-    return writeFront(dir, m, results, frontOf(results, "gpu_ms", yKey), yKey);
+    report::writeScatterChart(scatter(m, results, cost, error), dir / "pareto.png", dir / "pareto.svg");
+    report::writeScatterChart(scatter(m, results, memory, error), dir / "pareto-memory.png", dir / "pareto-memory.svg");
+    std::vector<const metrics::FigureRow*> axisFigures{&error, &cost};
+    if (&memory != &cost) axisFigures.push_back(&memory);
+    writeAxisCharts(dir, m, results, axisFigures);
+    return writeFront(dir, m, results, frontOf(results, cost.key, error.key), cost, error);
 }
 
 }  // namespace st::sweep

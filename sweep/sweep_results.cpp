@@ -11,8 +11,6 @@ namespace st::sweep {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double pct(double share) { return 100.0 * share; }
-
 std::string fingerprintOf(const SweepSpec& spec, const std::vector<Point>& points) {
     std::string text;
     for (const Axis& a : spec.axes) text += std::string(a.field->path) + ";";
@@ -22,6 +20,17 @@ std::string fingerprintOf(const SweepSpec& spec, const std::vector<Point>& point
 
 // JSON has no NaN: a figure that does not apply is written as null.
 nlohmann::ordered_json figureJson(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); }
+
+// A folder of another version has other figure keys: mixing its points with new ones would give
+// a report of half-empty columns, so it is refused, saying what to do.
+void checkVersion(const nlohmann::ordered_json& j, const std::string& source) {
+    const int version = j.is_object() && j.contains("version") && j["version"].is_number_integer() ? j["version"].get<int>() : 0;
+    if (version == kSweepResultsVersion) return;
+    throw std::runtime_error(source + ": written with sweep results version " + std::to_string(version) +
+                             (version < kSweepResultsVersion ? " (figure keys before the figure table, e.g. misclassified_pct)" : "") +
+                             "; this shadowtune reads version " + std::to_string(kSweepResultsVersion) +
+                             ": measure into another --out folder, or remove this one");
+}
 }  // namespace
 
 double PointResult::figure(const std::string& key) const {
@@ -30,53 +39,22 @@ double PointResult::figure(const std::string& key) const {
     return kNaN;
 }
 
-Figures figuresOf(const metrics::PresetMeasurement& m) {
-    const metrics::ErrorCounts& a = m.accuracy.all;
-    Figures f = {
-        {"misclassified_pct", pct(a.share(a.misclassified()))},
-        {"false_shadow_pct", pct(a.share(a.falseShadow()))},
-        {"false_light_pct", pct(a.share(a.falseLight()))},
-        {"edge_pct", pct(a.share(a.falseShadowEdge + a.falseLightEdge))},
-        {"gross_pct", pct(a.share(a.gross()))},
-        {"gross_px", double(a.gross())},
-        {"filtered_error", a.filteredError()},
-        {"receivers_px", double(a.receivers)},
-        {"density_median_px_per_texel", m.density.all.median},
-        {"density_p90_px_per_texel", m.density.all.p90},
-        {"density_p95_px_per_texel", m.density.all.p95},
-        {"aliased_pct", pct(m.density.all.aliasingShare)},
-        {"flicker_F_pct", m.flicker ? pct(m.flicker->flipRate) : kNaN},
-    };
-    // Against the soft truth of the sun's disc (metrics/soft_accuracy.h).
-    const metrics::ArtifactCounts& k = m.soft.all;
-    f.push_back({"soft_filtered_error", k.filteredError()});
-    f.push_back({"acne_pct", pct(k.share(k.acne))});
-    f.push_back({"light_bleeding_pct", pct(k.share(k.lightBleeding))});
-    f.push_back({"peter_panning_pct", pct(k.share(k.peterPanning))});
-    f.push_back({"missing_caster_pct", pct(k.share(k.missingCaster))});
-    f.push_back({"soft_edge_pct", pct(k.share(k.edge))});
-    f.push_back({"penumbra_width_error_px", m.soft.penumbra.errorPx()});
-    f.push_back({"penumbra_width_abs_error_px", std::abs(m.soft.penumbra.errorPx())});
-    const bool cost = m.cost.has_value();
-    f.push_back({"gpu_shadow_ms", cost ? m.cost->gpuShadowMs : kNaN});
-    f.push_back({"gpu_main_ms", cost ? m.cost->gpuMainMs : kNaN});
-    f.push_back({"gpu_ms", cost ? m.cost->gpuShadowMs + m.cost->gpuFilterMs + m.cost->gpuMainMs : kNaN});
-    f.push_back({"cpu_ms", cost ? m.cost->cpuMs : kNaN});
-    f.push_back({"shadow_map_mib",
-                 cost ? double(m.cost->shadowMapBytes + m.cost->filterMapBytes) / (1024.0 * 1024.0) : kNaN});
-    f.push_back({"caster_triangles", cost ? double(m.cost->triangles) : kNaN});
-    f.push_back({"caster_draws", cost ? double(m.cost->draws) : kNaN});
+Figures figuresOf(const metrics::PresetMeasurement& m, const metrics::FigureTable& table) {
+    Figures f;
+    for (const metrics::FigureValue& v : metrics::readFigures(m, metrics::InSweep, table))
+        f.push_back({v.row->key, v.value.value_or(kNaN)});
     return f;
 }
 
 nlohmann::ordered_json toJson(const PointResult& r) {
     nlohmann::ordered_json figures = nlohmann::ordered_json::object();
     for (const auto& [k, v] : r.figures) figures[k] = figureJson(v);
-    return {{"version", kSweepVersion}, {"id", r.id}, {"label", r.label}, {"reference", r.reference},
+    return {{"version", kSweepResultsVersion}, {"id", r.id}, {"label", r.label}, {"reference", r.reference},
             {"axisValues", r.axisValues}, {"figures", figures}, {"settings", r.settings}};
 }
 
 PointResult pointFromJson(const nlohmann::ordered_json& j, const std::string& source) {
+    checkVersion(j, source);
     try {
         PointResult r;
         r.id = j.at("id").get<std::string>();
@@ -116,12 +94,13 @@ nlohmann::ordered_json toJson(const Manifest& m) {
     nlohmann::ordered_json axes = nlohmann::ordered_json::array();
     for (std::size_t a = 0; a < m.axisFields.size(); ++a)
         axes.push_back({{"field", m.axisFields[a]}, {"values", m.axisValues[a]}, {"base", m.baseValues[a]}});
-    return {{"version", kSweepVersion}, {"sweep", m.sweep}, {"fingerprint", m.fingerprint}, {"scene", m.scene},
+    return {{"version", kSweepResultsVersion}, {"sweep", m.sweep}, {"fingerprint", m.fingerprint}, {"scene", m.scene},
             {"presetDir", m.presetDir.string()}, {"width", m.width}, {"height", m.height}, {"axes", axes},
             {"points", m.pointIds}, {"machine", m.machine}};
 }
 
 Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& source) {
+    checkVersion(j, source);
     try {
         Manifest m;
         m.sweep = j.at("sweep").get<std::string>();
@@ -143,19 +122,16 @@ Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& so
     }
 }
 
-const std::vector<std::pair<std::string, std::string>>& softErrorKeys() {
-    static const std::vector<std::pair<std::string, std::string>> keys{
-        {"soft-filtered", "soft_filtered_error"},     {"acne", "acne_pct"},
-        {"light-bleeding", "light_bleeding_pct"},     {"peter-panning", "peter_panning_pct"},
-        {"missing-caster", "missing_caster_pct"},     {"penumbra-width", "penumbra_width_abs_error_px"}};
-    return keys;
+const metrics::FigureRow& errorFigure(const std::string& error, const metrics::FigureTable& table) {
+    return metrics::figureByChoice(error, metrics::ErrorChoice, table);
 }
 
-std::vector<std::string> errorChoices() {
-    std::vector<std::string> out{"misclassified", "filtered", "flicker"};
-    for (const auto& [name, key] : softErrorKeys()) out.push_back(name);
-    return out;
+const metrics::FigureRow& costFigure(const std::string& cost, const metrics::FigureTable& table) {
+    return metrics::figureByChoice(cost, metrics::CostChoice, table);
 }
+
+std::vector<std::string> errorChoices() { return metrics::choicesOf(metrics::ErrorChoice); }
+std::vector<std::string> costChoices() { return metrics::choicesOf(metrics::CostChoice); }
 
 std::string errorNames() {
     std::string out;
@@ -163,13 +139,11 @@ std::string errorNames() {
     return out;
 }
 
-std::string errorKey(const std::string& error) {
-    if (error == "misclassified") return "misclassified_pct";
-    if (error == "filtered") return "filtered_error";
-    if (error == "flicker") return "flicker_F_pct";
-    for (const auto& [name, key] : softErrorKeys())
-        if (error == name) return key;
-    throw std::invalid_argument("--error must be one of " + errorNames() + ", got \"" + error + "\"");
+std::string errorKey(const std::string& error) { return errorFigure(error).key; }
+
+std::string shortName(const metrics::FigureRow& row) {
+    const std::string unit = metrics::unitSuffix(row.unit);
+    return unit.empty() ? row.label : row.label + " " + unit;
 }
 
 }  // namespace st::sweep

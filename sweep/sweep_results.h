@@ -2,6 +2,7 @@
 // What a sweep keeps of each point (its settings and every figure `measure` reports), the
 // manifest that ties a result folder to its sweep, and the report written from them: results.csv
 // and .json, the Pareto charts, one chart per axis, front.json and front/*.json. No GL.
+#include "metrics/figure_table.h"
 #include "metrics/measure_session.h"
 #include "sweep/sweep_spec.h"
 
@@ -14,7 +15,12 @@
 
 namespace st::sweep {
 
-// figure key (unit in the name) -> value; NaN where it does not apply (flicker without a path).
+// The version of a sweep folder's sweep.json and points/*.json (not of sweep files: kSweepVersion).
+// 2: figures keyed by the figure table's keys ("accuracy.misclassified") with raw values (shares
+// as fractions, bytes as bytes); 1 had "misclassified_pct" and the like, in display units.
+inline constexpr int kSweepResultsVersion = 2;
+
+// figure key (metrics/figure_table.h) -> raw value; NaN where it does not apply (flicker without a path).
 using Figures = std::vector<std::pair<std::string, double>>;
 
 struct PointResult {
@@ -27,10 +33,12 @@ struct PointResult {
     double figure(const std::string& key) const;  // NaN if absent
 };
 
-Figures figuresOf(const metrics::PresetMeasurement& m);
+// The figures of the table's rows shown in sweeps, in table order.
+Figures figuresOf(const metrics::PresetMeasurement& m, const metrics::FigureTable& table = metrics::figureTable());
 
 nlohmann::ordered_json toJson(const PointResult& r);
 // Throws std::runtime_error naming `source` for a file that is not a point result.
+// Throws too for a result of another kSweepResultsVersion, saying so.
 PointResult pointFromJson(const nlohmann::ordered_json& j, const std::string& source);
 
 // Ties a folder of point files to one sweep: shards and resumed runs must agree on it.
@@ -49,23 +57,34 @@ struct Manifest {
 
 Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, const std::string& machine);
 nlohmann::ordered_json toJson(const Manifest& m);
+// Throws std::runtime_error naming `source` for a file that is not a manifest, or one of a folder
+// written by a version of shadowtune with other figure keys.
 Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& source);
 
-// The figure the charts and the front minimise: "misclassified", "filtered", "flicker", or one
-// against the soft truth: "soft-filtered", "acne", "light-bleeding", "peter-panning",
-// "missing-caster", "penumbra-width" (|filtered - true| mean width, px).
+// The figures the charts and the front trade: an error (the table's ErrorChoice rows:
+// "misclassified", "filtered", "flicker", "soft-filtered", "acne", ...) against a cost (its
+// CostChoice rows: "measured" GPU time; the memory chart uses "memory").
 struct ReportOptions {
     std::string error = "misclassified";
+    std::string cost = "measured";
 };
-std::string errorKey(const std::string& error);  // "misclassified_pct", ...; throws for others
+// The row of a choice; throws std::invalid_argument listing the choices for others.
+const metrics::FigureRow& errorFigure(const std::string& error, const metrics::FigureTable& table = metrics::figureTable());
+const metrics::FigureRow& costFigure(const std::string& cost, const metrics::FigureTable& table = metrics::figureTable());
+inline constexpr const char* kMemoryChoice = "memory";  // the x axis of pareto-memory.png
+std::string errorKey(const std::string& error);   // "accuracy.misclassified", ...; throws for others
 std::vector<std::string> errorChoices();          // every name errorKey() takes
 std::string errorNames();                          // the same, comma-separated
-// The soft-truth names of errorChoices() and their figure keys.
-const std::vector<std::pair<std::string, std::string>>& softErrorKeys();
+std::vector<std::string> costChoices();            // every name costFigure() takes
+
+// A figure's title word with its unit: "misclassified %", "GPU total ms".
+std::string shortName(const metrics::FigureRow& row);
 
 // Writes every report file into `dir` from the points found (any subset of the manifest's).
 // Returns the ids of the front points.
+// results.csv has the table's sweep rows as columns, in table order.
 std::vector<std::string> writeReport(const std::filesystem::path& dir, const Manifest& m,
-                                     const std::vector<PointResult>& results, const ReportOptions& opt);
+                                     const std::vector<PointResult>& results, const ReportOptions& opt,
+                                     const metrics::FigureTable& table = metrics::figureTable());
 
 }  // namespace st::sweep

@@ -67,41 +67,47 @@ const ImVec4 kBleedingColour{1.0f, 150 / 255.0f, 0.0f, 1.0f};
 const ImVec4 kPeterPanningColour{225 / 255.0f, 40 / 255.0f, 225 / 255.0f, 1.0f};
 const ImVec4 kMissingColour{60 / 255.0f, 110 / 255.0f, 255 / 255.0f, 1.0f};
 
+// The overlay's and artifacts.png's colours name the figures they show.
+const ImVec4* colourOf(const std::string& key) {
+    if (key == "accuracy.falseShadow") return &kFalseShadowColour;
+    if (key == "accuracy.falseLight") return &kFalseLightColour;
+    if (key == "soft.acne") return &kAcneColour;
+    if (key == "soft.lightBleeding") return &kBleedingColour;
+    if (key == "soft.peterPanning") return &kPeterPanningColour;
+    if (key == "soft.missingCaster") return &kMissingColour;
+    return nullptr;
+}
+
+bool isSoft(const FigureLine& l) { return l.key.rfind("soft.", 0) == 0; }
+
+// The table's lines of one group (soft or not); hover: the figure's description.
+void figureLines(const AccuracyView& a, bool soft) {
+    for (const FigureLine& l : a.figures) {
+        if (isSoft(l) != soft) continue;
+        const std::string text = l.label + " " + l.value;
+        if (const ImVec4* colour = colourOf(l.key)) ImGui::TextColored(*colour, "%s", text.c_str());
+        else ImGui::TextUnformatted(text.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l.description.c_str());
+    }
+}
+
 void softFigures(UiFrame& f) {
     const SoftAccuracyCounts& k = f.in.accuracy.soft;
     ImGui::Separator();
     ImGui::TextUnformatted("Filtered, against the sun's disc");
-    ImGui::Text("%.2f deg sun, %d rays per px: filtered error %.4f", double(k.angularDiameter), k.rays,
-                k.filteredError);
-    ImGui::TextColored(kAcneColour, "acne %s (%zu px)", percent(k.share(k.acne)).c_str(), k.acne);
-    ImGui::SameLine();
-    ImGui::TextColored(kBleedingColour, "light bleeding %s (%zu px)", percent(k.share(k.lightBleeding)).c_str(),
-                       k.lightBleeding);
-    ImGui::TextColored(kPeterPanningColour, "peter-panning %s (%zu px)", percent(k.share(k.peterPanning)).c_str(),
-                       k.peterPanning);
-    ImGui::SameLine();
-    ImGui::TextColored(kMissingColour, "missing caster %s (%zu px)", percent(k.share(k.missingCaster)).c_str(),
-                       k.missingCaster);
-    ImGui::Text("Edge %s; penumbra %.2f px wide, true %.2f px", percent(k.share(k.edge)).c_str(),
-                k.penumbraFilteredPx, k.penumbraTruthPx);
-    recordItem(f.state.rects, "accuracy.soft");
+    ImGui::Text("%.2f deg sun, %d rays per px", double(k.angularDiameter), k.rays);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The filtered shadow against the visible fraction of the sun's disc (light.angularDiameter).\n"
                           "Acne: too dark where the truth is lit; bleeding: too light inside an umbra, more than k texels\n"
                           "from its edge; peter-panning: too light within k texels of a contact; missing caster: a whole\n"
                           "shadow too light (k = measure.artifactTexels).");
+    figureLines(f.in.accuracy, true);
+    recordItem(f.state.rects, "accuracy.soft");
 }
 
 void figures(UiFrame& f) {
     const AccuracyView& a = f.in.accuracy;
-    const AccuracyCounts& c = a.all;
-    ImGui::Text("Misclassified %s of %zu sun-facing px:", percent(c.share(c.misclassified())).c_str(), c.receivers);
-    ImGui::TextColored(kFalseShadowColour, "false shadow %s", percent(c.share(c.falseShadow())).c_str());
-    ImGui::SameLine();
-    ImGui::TextColored(kFalseLightColour, "false light %s", percent(c.share(c.falseLight())).c_str());
-    // Gross errors are few when settings are sane, and each is a real artifact: count them.
-    ImGui::Text("Edge band %s, gross %zu px; filtered error %.4f", percent(c.share(c.edge())).c_str(), c.gross(),
-                c.filteredError);
+    figureLines(a, false);
     recordItem(f.state.rects, "accuracy.figures");
     drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
     cascadeTable(f);

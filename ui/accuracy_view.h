@@ -36,6 +36,14 @@ struct SoftAccuracyCounts {
     double share(std::size_t count) const { return receivers ? double(count) / double(receivers) : 0.0; }
 };
 
+// One figure line of the panel, from the figure table (metrics/figure_table.h), ready to show.
+struct FigureLine {
+    std::string key;          // "accuracy.misclassified": its group is the part before the first dot
+    std::string label;        // "misclassified"
+    std::string value;        // "1.234 %"
+    std::string description;  // the hover text
+};
+
 struct AccuracyView {
     enum class State {
         Off,        // the app computes nothing (the panel was never shown)
@@ -56,6 +64,7 @@ struct AccuracyView {
     AccuracyCounts beyond;      // past the shadow distance: drawn lit
     std::vector<std::string> warnings;  // Done: wasted maps, each with its likely fix (metrics/map_warnings.h)
     SoftAccuracyCounts soft;
+    std::vector<FigureLine> figures;  // Done: the table's Accuracy-panel rows, in table order
 };
 
 }  // namespace st::ui

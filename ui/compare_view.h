@@ -19,15 +19,16 @@ struct AbView {
     AccuracyView accuracy;
 };
 
-// One measured point of the sweep, in the units the chart shows.
+// One measured point of the sweep, in the units the chart shows (the app picks the figures from
+// the figure table: its cost, memory and error choices, and scales them for display).
 struct SweepPoint {
     std::string label;          // "count=2 mapSize=1024", or a reference's name ("current", "A")
     bool reference = false;
-    double gpuMs = 0.0;         // shadow + main, median
-    double memoryMiB = 0.0;     // shadow-map memory
-    double errorPct = 0.0;      // misclassified share of the sun-facing pixels
-    bool frontByTime = false;   // on the Pareto front of (gpuMs, errorPct)
-    bool frontByMemory = false; // ... of (memoryMiB, errorPct)
+    double cost = 0.0;          // the cost choice, e.g. GPU ms
+    double memory = 0.0;        // map memory, MiB
+    double error = 0.0;         // the error choice, e.g. misclassified %
+    bool frontByTime = false;   // on the Pareto front of (cost, error)
+    bool frontByMemory = false; // ... of (memory, error)
     std::string figures;        // the tooltip's lines of figures
     // What a click applies to the document: field path -> value as JSON text.
     std::vector<std::pair<std::string, std::string>> assignments;
@@ -44,6 +45,8 @@ struct SweepView {
     std::string scene;                // what the sweep measured, for the chart's title
     int width = 0, height = 0;
     std::vector<SweepPoint> points;   // those measured so far
+    // The chart's axis titles and the cost's short name (the figure table's rows).
+    std::string costTitle = "cost", memoryTitle = "memory", errorTitle = "error", costName = "cost";
 };
 
 // One axis the panel asks for: a sweepable field and its values as the sweep file spells them.

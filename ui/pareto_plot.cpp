@@ -124,14 +124,14 @@ PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size) {
     m.max = {origin.x + size.x - 12.0f, origin.y + size.y - line * 2.0f - 10.0f};
     if (m.max.x - m.min.x < 40.0f || m.max.y - m.min.y < 40.0f) return result;
 
-    auto xOf = [byMemory](const SweepPoint& p) { return byMemory ? p.memoryMiB : p.gpuMs; };
+    auto xOf = [byMemory](const SweepPoint& p) { return byMemory ? p.memory : p.cost; };
     auto onFront = [byMemory](const SweepPoint& p) { return byMemory ? p.frontByMemory : p.frontByTime; };
     std::vector<double> xs, ys;
-    for (const SweepPoint& p : view.points) xs.push_back(xOf(p)), ys.push_back(p.errorPct);
+    for (const SweepPoint& p : view.points) xs.push_back(xOf(p)), ys.push_back(p.error);
     std::tie(m.x0, m.x1) = paddedRange(xs);
     std::tie(m.y0, m.y1) = paddedRange(ys);
-    m.y0 = std::max(m.y0, std::min(0.0, m.y1 - 1.0));  // a share is never below 0
-    drawAxes(dl, m, byMemory ? "shadow-map memory (MiB)" : "GPU time, shadow + main (ms)", "misclassified (%)");
+    m.y0 = std::max(m.y0, std::min(0.0, m.y1 - 1.0));  // an error is never below 0
+    drawAxes(dl, m, (byMemory ? view.memoryTitle : view.costTitle).c_str(), view.errorTitle.c_str());
 
     float lx = m.min.x;
     const ImVec2 legendAt{m.min.x, origin.y + line + 2.0f};
@@ -141,7 +141,7 @@ PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size) {
     legendEntry(dl, {lx, legendAt.y}, 3, kA, "A");
 
     std::vector<ImVec2> screen;
-    for (const SweepPoint& p : view.points) screen.push_back(m.toScreen(xOf(p), p.errorPct));
+    for (const SweepPoint& p : view.points) screen.push_back(m.toScreen(xOf(p), p.error));
     std::vector<int> front;
     for (std::size_t i = 0; i < view.points.size(); ++i)
         if (onFront(view.points[i])) front.push_back(int(i));

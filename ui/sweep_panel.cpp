@@ -132,7 +132,8 @@ void tooltip(const SweepPoint& p) {
 
 void chart(UiFrame& f, const SweepView& v) {
     if (v.points.empty()) return;
-    ImGui::RadioButton("x: GPU time", !f.state.compare.byMemory) && (f.state.compare.byMemory = false);
+    const std::string costRadio = "x: " + v.costName;
+    ImGui::RadioButton(costRadio.c_str(), !f.state.compare.byMemory) && (f.state.compare.byMemory = false);
     ImGui::SameLine();
     ImGui::RadioButton("x: memory", f.state.compare.byMemory) && (f.state.compare.byMemory = true);
     recordItem(f.state.rects, "sweep.byMemory");

@@ -52,7 +52,7 @@ TEST(CompareTest, DeltasAreBMinusA) {
     EXPECT_DOUBLE_EQ(*figure(figures, "accuracy.misclassified").delta(), 0.05);
     EXPECT_DOUBLE_EQ(*figure(figures, "accuracy.falseShadow").delta(), 0.05);
     EXPECT_DOUBLE_EQ(*figure(figures, "accuracy.edgeBand").delta(), 0.05);
-    EXPECT_EQ(*figure(figures, "accuracy.gross").delta(), 0.0);
+    EXPECT_EQ(*figure(figures, "accuracy.grossShare").delta(), 0.0);
     EXPECT_DOUBLE_EQ(*figure(figures, "cost.gpuShadowMs").delta(), -0.5);
     EXPECT_DOUBLE_EQ(*figure(figures, "accuracy.misclassified").a, 0.04);
 }

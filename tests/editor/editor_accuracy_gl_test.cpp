@@ -3,6 +3,7 @@
 // show measure's figures; a change while computing must hide everything until the new frame's
 // own figures arrive.
 #include "app/editor_accuracy.h"
+#include "metrics/figure_table.h"
 #include "tests/metrics/metrics_gl_util.h"
 #include "tests/support/gl_fixture.h"
 
@@ -38,6 +39,16 @@ protected:
         for (std::size_t c = 0; c < v.cascades.size(); ++c)
             EXPECT_EQ(v.cascades[c].falseLight(), m.accuracy.cascades[c].falseLight()) << c;
         EXPECT_EQ(v.width, m.samples.width);
+        // The panel's lines are the figure table's Accuracy-panel rows, in table order, with
+        // measure's values for the point-truth figures.
+        const auto rows = metrics::figuresShown(metrics::InEditorAccuracy);
+        ASSERT_EQ(v.figures.size(), rows.size());
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            EXPECT_EQ(v.figures[i].key, rows[i]->key);
+            EXPECT_EQ(v.figures[i].description, rows[i]->description);
+            if (rows[i]->key.rfind("accuracy.", 0) == 0)
+                EXPECT_EQ(v.figures[i].value, metrics::formatValue(rows[i]->unit, rows[i]->read(m))) << rows[i]->key;
+        }
     }
 
     Settings settings = test::presetAtTestSize("default");

@@ -40,6 +40,26 @@ const ui::SweepPoint* find(const ui::SweepView& v, const std::string& label) {
     return nullptr;
 }
 
+// A point as the chart shows it: the default error and cost choices of the figure table, in
+// their display units, and one hover line per Sweep-panel row.
+TEST(EditorSweepChartTest, PointShowsTheTablesChoicesInTheirUnits) {
+    metrics::PresetMeasurement m;
+    m.accuracy.all.receivers = 400;
+    m.accuracy.all.falseShadowEdge = 6;  // 1.5 %
+    m.cost = metrics::CostReport{};
+    m.cost->gpuShadowMs = 2.0, m.cost->gpuMainMs = 3.0, m.cost->gpuFilterMs = 0.5;
+    m.cost->shadowMapBytes = 8u << 20, m.cost->filterMapBytes = 2u << 20;
+    sweep::PointResult r{"1", "count=1", false, {"1"}, toOrderedJson(Settings{}), sweep::figuresOf(m)};
+    const ui::SweepPoint p = chartPoint(r, {"cascades.count"});
+    EXPECT_DOUBLE_EQ(p.error, 1.5);
+    EXPECT_DOUBLE_EQ(p.cost, 5.5);
+    EXPECT_DOUBLE_EQ(p.memory, 10.0);
+    for (const metrics::FigureRow* row : metrics::figuresShown(metrics::InEditorSweep))
+        EXPECT_NE(p.figures.find(row->label + " " + metrics::formatValue(row->unit, row->read(m))), std::string::npos)
+            << row->key << " in\n" << p.figures;
+    EXPECT_NE(p.figures.find("misclassified 1.500 %"), std::string::npos) << p.figures;
+}
+
 class EditorSweepTest : public ::testing::Test {
 protected:
     void TearDown() override {
@@ -66,10 +86,10 @@ TEST_F(EditorSweepTest, RunEndsDoneWithEveryPointAndMarkedReferences) {
     ASSERT_TRUE(one && two && pa && current);
     EXPECT_TRUE(pa->reference && current->reference && !one->reference);
     // A is the live settings with count 2: the same frame as the grid's count=2 point.
-    EXPECT_DOUBLE_EQ(pa->errorPct, two->errorPct);
-    EXPECT_DOUBLE_EQ(pa->memoryMiB, two->memoryMiB);
-    EXPECT_DOUBLE_EQ(one->memoryMiB, 4.0);  // one 1024^2 layer of 32-bit depth
-    EXPECT_DOUBLE_EQ(current->memoryMiB, 16.0);
+    EXPECT_DOUBLE_EQ(pa->error, two->error);
+    EXPECT_DOUBLE_EQ(pa->memory, two->memory);
+    EXPECT_DOUBLE_EQ(one->memory, 4.0);  // one 1024^2 layer of 32-bit depth
+    EXPECT_DOUBLE_EQ(current->memory, 16.0);
     EXPECT_EQ(one->assignments, (std::vector<std::pair<std::string, std::string>>{{"cascades.count", "1"}}));
     bool hasCount = false;
     for (const auto& [path, value] : pa->assignments) hasCount |= path == "cascades.count" && value == "2";

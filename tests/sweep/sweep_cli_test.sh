@@ -53,6 +53,14 @@ check "resumed run has every point" "[[ \$(ls '$work/run/points' | wc -l) -eq 12
 "$st" sweep "$work/other.json" --out "$work/run" >"$work/other.log" 2>&1
 check "another sweep's folder is refused" "[[ $? -eq 2 ]] && grep -q 'holds results of another sweep' '$work/other.log'"
 
+# A folder written before the figure table's keys (results version 1): refused, saying what to do.
+mkdir -p "$work/old" && jq '.version = 1' "$work/run/sweep.json" >"$work/old/sweep.json"
+"$st" sweep "$work/slow.json" --out "$work/old" >"$work/old.log" 2>&1
+check "an old results folder is refused" "[[ $? -eq 2 ]] && grep -q 'sweep.json: written with sweep results version 1' '$work/old.log' && grep -q 'another --out' '$work/old.log'"
+check "results.csv columns are the figure table's keys" "head -1 '$work/run/results.csv' | grep -q ',accuracy.misclassified,.*,cost.gpuMs,'"
+"$st" sweep "$work/s.json" --out "$work/q" --cost misclassified >"$work/cost.log" 2>&1
+check "a --cost that is no cost is refused" "[[ $? -ne 0 ]] && grep -q 'measured' '$work/cost.log'"
+
 "$st" sweep "$work/s.json" --out "$work/shard1" --shard 1/2 --frames 1 >/dev/null 2>&1 &&
   "$st" sweep "$work/s.json" --out "$work/shard2" --shard 2/2 --frames 1 >/dev/null 2>&1 &&
   "$st" sweep --merge "$work/shard1" "$work/shard2" --out "$work/merged" >"$work/merge.log" 2>&1

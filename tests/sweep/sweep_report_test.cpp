@@ -3,7 +3,9 @@
 #include "sweep/sweep_results.h"
 #include "tests/sweep/sweep_test_util.h"
 
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace st;
@@ -15,7 +17,8 @@ PointResult point(const std::string& id, double gpuMs, double error, bool refere
     Settings s;
     s.scene = scene;
     return {id, "p" + id, reference, {reference ? "" : id}, toOrderedJson(s),
-            {{"misclassified_pct", error}, {"filtered_error", error / 10}, {"gpu_ms", gpuMs}, {"shadow_map_mib", 16.0}}};
+            {{"accuracy.misclassified", error}, {"accuracy.filteredError", error / 10}, {"cost.gpuMs", gpuMs},
+             {"cost.mapBytes", 16.0 * (1 << 20)}}};
 }
 
 Manifest manifest(const std::vector<PointResult>& points, const std::filesystem::path& presetDir) {
@@ -50,9 +53,19 @@ TEST(SweepReportTest, FrontHoldsThePointsNoOtherDominates) {
     const auto front = writeReport(dir.path(), manifest(points, dir.path()), points, {});
     EXPECT_EQ(front, (std::vector<std::string>{"1", "2", "4", "5"}));
     const std::string csv = read(dir.path() / "results.csv");
-    EXPECT_EQ(csv.substr(0, csv.find('\n')), "id,kind,label,cascades.count,misclassified_pct,filtered_error,gpu_ms,shadow_map_mib");
+    const std::string header = csv.substr(0, csv.find('\n'));
+    EXPECT_EQ(header.rfind("id,kind,label,cascades.count,accuracy.misclassified,accuracy.falseShadow,", 0), 0u) << header;
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
-    EXPECT_NE(csv.find("5,reference,p5,,1,0.1,40,16\n"), std::string::npos) << csv;
+    // Figures the points lack are empty cells; those they have sit in their table-order columns.
+    std::string row5 = "5,reference,p5,";
+    for (const metrics::FigureRow* r : metrics::figuresShown(metrics::InSweep)) {
+        const double v = points[4].figure(r->key);
+        row5 += ",";
+        if (std::isfinite(v)) row5 += std::map<std::string, std::string>{
+            {"accuracy.misclassified", "1"}, {"accuracy.filteredError", "0.1"}, {"cost.gpuMs", "40"},
+            {"cost.mapBytes", "16777216"}}.at(r->key);  // bytes as a whole number
+    }
+    EXPECT_NE(csv.find(row5 + "\n"), std::string::npos) << row5 << "\n" << csv;
     for (const char* f : {"pareto.png", "pareto.svg", "pareto-memory.png", "results.json", "front.json"})
         EXPECT_TRUE(std::filesystem::file_size(dir.path() / f) > 0) << f;
     const Settings saved = loadPreset(dir.path() / "front" / "2.json");  // a front point loads as a preset
@@ -78,7 +91,8 @@ TEST(SweepReportTest, FrontPresetsFindARelativeSceneFromTheirOwnFolder) {
     EXPECT_TRUE(std::filesystem::exists(scene)) << saved["scene"];
 }
 
-// Every --error choice names a figure a measured point has, the soft-truth ones their columns.
+// Every --error choice names a figure a measured point has, the soft-truth ones their columns
+// (raw values: shares as fractions).
 TEST(SweepReportTest, EveryErrorChoiceIsAFigureOfAPoint) {
     metrics::PresetMeasurement m;
     m.soft.all.receivers = 200;
@@ -94,9 +108,9 @@ TEST(SweepReportTest, EveryErrorChoiceIsAFigureOfAPoint) {
         return 0.0;
     };
     for (const std::string& choice : errorChoices()) value(errorKey(choice));
-    EXPECT_DOUBLE_EQ(value(errorKey("acne")), 5.0);
-    EXPECT_DOUBLE_EQ(value(errorKey("light-bleeding")), 2.0);
+    EXPECT_DOUBLE_EQ(value(errorKey("acne")), 0.05);
+    EXPECT_DOUBLE_EQ(value(errorKey("light-bleeding")), 0.02);
     EXPECT_DOUBLE_EQ(value(errorKey("penumbra-width")), 1.5);
-    EXPECT_DOUBLE_EQ(value("penumbra_width_error_px"), -1.5);
+    EXPECT_DOUBLE_EQ(value("soft.penumbraWidth.errorPx"), -1.5);
     EXPECT_THROW(errorKey("sharpness"), std::invalid_argument);
 }

@@ -38,7 +38,7 @@ protected:
         for (const PointResult& r : results) {
             Figures& f = out[r.id];
             for (const auto& [k, v] : r.figures)
-                if (!k.ends_with("_ms")) f.push_back({k, v});
+                if (!metrics::findFigure(k)->timing) f.push_back({k, v});
         }
         return out;
     }
@@ -100,10 +100,10 @@ TEST_F(SweepRunGLTest, PointFiguresAreMeasuresOwn) {
     const metrics::PresetMeasurement m = session.measure(points[3].settings, s.presetDir);  // its own session
     const auto got = resultsIn("one").at(points[3].id);
     const auto a = m.accuracy.all;
-    EXPECT_DOUBLE_EQ(got[0].second, 100.0 * a.share(a.misclassified()));
-    EXPECT_EQ(got[0].first, "misclassified_pct");
+    EXPECT_DOUBLE_EQ(got[0].second, a.share(a.misclassified()));
+    EXPECT_EQ(got[0].first, "accuracy.misclassified");
     for (const auto& [k, v] : got)
-        if (k == "receivers_px") EXPECT_EQ(v, double(a.receivers));
+        if (k == "accuracy.receivers") EXPECT_EQ(v, double(a.receivers));
 }
 
 TEST_F(SweepRunGLTest, AFolderOfAnotherSweepIsRefused) {

@@ -44,7 +44,7 @@ protected:
         auto point = [](std::string label, double ms, double err, int count, int size, bool front) {
             ui::SweepPoint p;
             p.label = std::move(label);
-            p.gpuMs = ms, p.errorPct = err, p.memoryMiB = count * size * size * 4.0 / (1 << 20);
+            p.cost = ms, p.error = err, p.memory = count * size * size * 4.0 / (1 << 20);
             p.frontByTime = p.frontByMemory = front;
             p.figures = "misclassified " + std::to_string(err) + " %";
             p.assignments = {{"cascades.count", std::to_string(count)}, {"cascades.mapSize", std::to_string(size)}};
