@@ -19,6 +19,16 @@ double medianOf(const std::vector<FrameStats>& frames, Get get) {
     for (const FrameStats& f : frames) values.push_back(get(f));
     return median(std::move(values));
 }
+
+template <class Get>
+TimeRange rangeOf(const std::vector<FrameStats>& frames, Get get) {
+    TimeRange r{get(frames.front()), get(frames.front())};
+    for (const FrameStats& f : frames) {
+        r.minMs = std::min(r.minMs, get(f));
+        r.maxMs = std::max(r.maxMs, get(f));
+    }
+    return r;
+}
 }  // namespace
 
 CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vector<std::size_t>& covered, int mapSize) {
@@ -30,6 +40,13 @@ CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vecto
     r.gpuMainMs = medianOf(frames, [](const FrameStats& f) { return f.gpuMainMs; });
     r.cpuMs = medianOf(frames, [](const FrameStats& f) { return f.cpuMs; });
     r.gpuFilterMs = medianOf(frames, [](const FrameStats& f) { return f.gpuFilterMs; });
+    r.gpuShadowRange = rangeOf(frames, [](const FrameStats& f) { return f.gpuShadowMs; });
+    r.gpuMainRange = rangeOf(frames, [](const FrameStats& f) { return f.gpuMainMs; });
+    r.gpuFilterRange = rangeOf(frames, [](const FrameStats& f) { return f.gpuFilterMs; });
+    r.cpuRange = rangeOf(frames, [](const FrameStats& f) { return f.cpuMs; });
+    for (const FrameStats& f : frames)
+        if (!(f.work == last.work)) throw std::logic_error("cost: the counted work differs between timed frames of the same settings");
+    r.work = last.work;
     r.shadowMapBytes = last.shadowMapBytes;
     r.filterMapBytes = last.filterMapBytes;
     r.sceneTriangles = last.sceneTriangles;

@@ -1,6 +1,7 @@
 #pragma once
-// Cost (docs/architecture.md#cost): GPU time per pass (timer queries, median over frames after a
-// warm-up), CPU time, shadow-map memory, caster triangles and draw calls submitted per cascade,
+// Cost (docs/architecture.md#cost): GPU time per pass (timer queries, median with minimum and
+// maximum over forced-redraw frames after a warm-up), CPU time, the counted work per pass (identical
+// in every timed frame: renderer/render/pass_work.h), shadow-map memory, caster triangles and draw calls submitted per cascade,
 // and texels: every layer's mapSize^2 is cleared and rasterised into, of which casters cover
 // `texelsCovered`.
 #include "renderer/render/frame_stats.h"
@@ -18,12 +19,24 @@ struct CascadeCost {
     std::size_t texelsCovered = 0;  // depth written below the clear value
 };
 
+// Minimum and maximum over the timed frames, beside CostReport's medians.
+struct TimeRange {
+    double minMs = 0.0;
+    double maxMs = 0.0;
+    bool operator==(const TimeRange&) const = default;
+};
+
 struct CostReport {
     int frames = 0;           // timed frames (after the warm-up frame)
     double gpuShadowMs = 0.0; // medians
     double gpuMainMs = 0.0;
     double gpuFilterMs = 0.0; // the filter's extra passes (moment maps and their blur, the screen-space path)
     double cpuMs = 0.0;
+    TimeRange gpuShadowRange;
+    TimeRange gpuMainRange;
+    TimeRange gpuFilterRange;
+    TimeRange cpuRange;
+    FrameWork work;           // of every timed frame (summariseCost checks they agree)
     std::size_t shadowMapBytes = 0;
     std::size_t filterMapBytes = 0;  // the filter's own maps
     std::size_t sceneTriangles = 0;
@@ -36,7 +49,8 @@ struct CostReport {
 
 double median(std::vector<double> values);  // 0 for none; the upper median for an even count
 
-// `frames`: the timed frames' statistics (not the warm-up), all of the same settings.
+// `frames`: the timed frames' statistics (not the warm-up), all of the same settings; throws
+// std::logic_error when their counted work differs (it must not for the same settings).
 // `covered`: texels written per cascade (coveredShadowTexels); each cascade has its stats' mapSize
 // texels per side (`mapSize` when the stats carry none).
 CostReport summariseCost(const std::vector<FrameStats>& frames, const std::vector<std::size_t>& covered, int mapSize);

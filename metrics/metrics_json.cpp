@@ -1,5 +1,7 @@
 #include "metrics/metrics_json.h"
 
+#include "renderer/render/pass_work_json.h"
+
 namespace st::metrics {
 namespace {
 using OJson = nlohmann::ordered_json;
@@ -95,6 +97,12 @@ OJson costJson(const CostReport& c) {
             {"draws", c.draws},                {"casterTriangles", c.triangles}, {"texels", c.texels},
             {"texelsCovered", c.texelsCovered}, {"gpuFilterMs", c.gpuFilterMs},
             {"filterMapBytes", c.filterMapBytes}, {"cascades", OJson::array()}};
+    for (const auto& [key, range] : {std::pair{"gpuShadow", c.gpuShadowRange}, std::pair{"gpuMain", c.gpuMainRange},
+                                     std::pair{"gpuFilter", c.gpuFilterRange}, std::pair{"cpu", c.cpuRange}}) {
+        j[std::string(key) + "MinMs"] = range.minMs;
+        j[std::string(key) + "MaxMs"] = range.maxMs;
+    }
+    j["work"] = frameWorkJson(c.work);
     for (const CascadeCost& k : c.cascades) {
         j["cascades"].push_back(OJson{{"draws", k.draws}, {"casterTriangles", k.triangles}, {"gpuMs", k.gpuMs},
                                       {"texels", k.texels}, {"texelsCovered", k.texelsCovered}});

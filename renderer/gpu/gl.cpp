@@ -61,6 +61,12 @@ Query createQuery(GLenum target) {
     return Query(created(id));
 }
 
+Query genQuery() {
+    GLuint id = 0;
+    glGenQueries(1, &id);
+    return Query(created(id));
+}
+
 namespace {
 GLuint compileStage(GLenum stage, const std::string& src, const std::string& name) {
     GLuint sh = glCreateShader(stage);

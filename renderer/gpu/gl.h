@@ -59,6 +59,9 @@ Framebuffer createFramebuffer();
 VertexArray createVertexArray();
 Sampler createSampler();
 Query createQuery(GLenum target);
+// A query name with no target yet (glGenQueries): its first glBeginQuery gives it one. For the
+// pipeline-statistics targets, which Mesa 22's glCreateQueries rejects as GL_INVALID_ENUM.
+Query genQuery();
 
 // Number of GL objects alive that these wrappers created (tests check reallocation leaks none).
 int liveObjectCount();

@@ -25,9 +25,19 @@ std::size_t trianglesMeetingBox(const Scene& scene, const ClusteredScene& cs, co
     return n;
 }
 
+// A redrawn map: its tile cleared and rasterised into (every texel once, D32F), by `commands` draws.
+PassWork mapWork(int size, std::size_t commands) {
+    PassWork w;
+    w.draws = commands;
+    w.texelsCleared = std::uint64_t(size) * std::uint64_t(size);
+    w.bytesWritten = 4 * w.texelsCleared;
+    return w;
+}
+
 }  // namespace
 
-void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs) {
+void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs,
+                              PassWork& work) {
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     const csm::CascadeFit fit = plan_.cascades[std::size_t(i)];
     const csm::CasterVolume volume = csm::casterVolume(s, plan_.camera, plan_.splits, i, fit);
@@ -49,6 +59,7 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
         viewBlock_.upload({fit.viewProj});
         scene_.drawBatches(batches_, FaceCulling::Keep);
         cache_.drawn(i, key, fit);
+        work = mapWork(shadowMaps_.tile(i).size, batches_.rangeCount());
         held = CascadeStats{};
         held.casterDraws = int(batches_.batches().size());
         held.casterTriangles = batches_.triangleCount();
@@ -73,7 +84,8 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
     cs.mapReason = d.reason;
 }
 
-void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs) {
+void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs,
+                                   PassWork& work) {
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     const csm::CascadeFit& fit = plan_.cascades[std::size_t(i)];
     shadowMaps_.beginCascade(i, state);
@@ -86,6 +98,7 @@ void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassStat
     }
     cs.redrawn = true;
     cs.mapReason = "naive: every map every frame";
+    work = mapWork(shadowMaps_.tile(i).size, std::size_t(cs.casterDraws));
 }
 
 void Renderer::drawVisible(const glm::mat4& viewProj) {
@@ -98,6 +111,7 @@ void Renderer::drawVisible(const glm::mat4& viewProj) {
             mainTriangles_ += item.indexCount / 3;
             ++mainDraws_;
         }
+        visibleCommands_ = std::uint64_t(mainDraws_);
         return;
     }
     const auto planes = csm::frustumPlanes(viewProj);
@@ -109,6 +123,7 @@ void Renderer::drawVisible(const glm::mat4& viewProj) {
     scene_.drawBatches(batches_, FaceCulling::PerMaterial);
     mainTriangles_ = batches_.triangleCount();
     mainDraws_ = int(batches_.batches().size());
+    visibleCommands_ = batches_.rangeCount();
 }
 
 }  // namespace st

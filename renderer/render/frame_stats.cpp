@@ -1,5 +1,7 @@
 #include "renderer/render/frame_stats.h"
 
+#include "renderer/render/pass_work_json.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -35,6 +37,7 @@ std::string toJsonText(const FrameStats& s) {
     j["cpuMs"] = s.cpuMs;
     j["mainTriangles"] = s.mainTriangles;
     j["mainDraws"] = s.mainDraws;
+    j["work"] = frameWorkJson(s.work);
     auto& arr = j["cascades"] = nlohmann::ordered_json::array();
     for (const CascadeStats& c : s.cascades) {
         nlohmann::ordered_json e;

@@ -115,6 +115,26 @@ void MomentMaps::bindForSampling() const {
     glBindSampler(ST_BINDING_MOMENTS, mipmaps_ ? trilinear_.id() : linear_.id());
 }
 
+PassWork MomentMaps::buildWork(int blurRadius) const {
+    const std::uint64_t texels = std::uint64_t(size_) * std::uint64_t(size_) * std::uint64_t(layers_);
+    const std::uint64_t taps = 2u * std::uint64_t(blurRadius) + 1u;
+    const auto texel = std::uint64_t(momentFormat(kind_, sixteen_).bytesPerTexel);
+    constexpr std::uint64_t kScratch = 16;  // RGBA32F
+    PassWork w;
+    w.draws = 2u * std::uint64_t(layers_);
+    w.filterTaps = 2u * texels * taps;
+    w.bytesRead = texels * taps * (4u + kScratch);
+    w.bytesWritten = texels * (kScratch + texel);
+    if (mipmaps_) {
+        const std::uint64_t all = momentMapBytes(kind_, sixteen_, true, layers_, size_) - kScratch * std::uint64_t(size_) * std::uint64_t(size_);
+        const std::uint64_t level0 = texels * texel;
+        const std::uint64_t last = texel * std::uint64_t(layers_);  // the 1x1 level is read by none
+        w.bytesWritten += all - level0;
+        w.bytesRead += all - last;
+    }
+    return w;
+}
+
 std::size_t MomentMaps::bytes() const { return momentMapBytes(kind_, sixteen_, mipmaps_, layers_, size_); }
 
 int MomentMaps::components() const { return kind_ == FilterKind::Vsm || kind_ == FilterKind::Evsm2 ? 2 : 4; }

@@ -5,6 +5,7 @@
 // Gaussian, seed 004 "VSMs with CSMs"), then optionally mipmapped. Array layout only.
 #include "renderer/gpu/gl.h"
 #include "renderer/gpu/uniform_buffer.h"
+#include "renderer/render/pass_work.h"
 #include "renderer/render/shadow_maps.h"
 #include "renderer/settings/settings.h"
 #include "shaders/interface.h"
@@ -31,6 +32,11 @@ public:
     // at ST_BLOCK_CASCADES (filter kind, blur radius, exponents).
     void build(const ShadowMaps& depth, const Settings& s);
     void bindForSampling() const;  // ST_BINDING_MOMENTS, linear (trilinear with mipmaps)
+    // The renderer's own counts of the last build() with that blur radius: per layer two
+    // fullscreen draws of size^2 fragments, 2r + 1 fetches each (depth, then the RGBA32F
+    // scratch), the scratch and the layer written; with mipmaps each level read once and the
+    // next written.
+    PassWork buildWork(int blurRadius) const;
     GLuint texture() const { return moments_.id(); }
     std::size_t bytes() const;
     int layers() const { return layers_; }

@@ -1,6 +1,7 @@
 #include "renderer/render/renderer.h"
 
 #include "renderer/csm/culling.h"
+#include "renderer/csm/filter_taps.h"
 #include "renderer/csm/z_extension_audit.h"
 #include "renderer/render/shader_blocks.h"
 #include "renderer/render/shader_library.h"
@@ -9,6 +10,27 @@
 #include <string>
 
 namespace st {
+namespace {
+// Counter slots of a frame: the timers' (cascades, main, depth bounds, moment maps) with the
+// screen-space path split into its mask pass (a scene draw that filters the maps) and its blurs.
+struct CounterSlots {
+    int count;  // cascades
+    int main() const { return count; }
+    int bounds() const { return count + 1; }
+    int moments() const { return count + 2; }
+    int mask() const { return count + 3; }
+    int screenBlur() const { return count + 4; }
+    int total() const { return count + 5; }
+};
+
+std::uint64_t pixels(int width, int height) { return std::uint64_t(width) * std::uint64_t(height); }
+
+// What a pass's fragments read through the filter: taps per fragment from the settings.
+void addFilterReads(PassWork& w, const csm::FilterTaps& t) {
+    w.filterTaps += w.fragments * std::uint64_t(t.taps);
+    w.bytesRead += w.fragments * std::uint64_t(t.texels) * std::uint64_t(t.bytesPerTexel);
+}
+}  // namespace
 
 Renderer::Renderer(const Scene& scene) : scene_(scene) {
     depthProgram_ = linkShaderFiles("shadow_depth.vert", "shadow_depth.frag", "shadow_depth");
@@ -29,11 +51,16 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     const int filterTimer = s.cascades.count + 2;
     const int screenTimer = s.cascades.count + 3;
     timers_.beginFrame(s.cascades.count + 4);
+    const CounterSlots slots{s.cascades.count};
+    counters_.beginFrame(slots.total());
+    ownWork_.assign(std::size_t(slots.total()), PassWork{});
     csm::SampleBounds samples;
     const bool reduce = csm::needsSampleBounds(s.cascades);
     if (reduce) {
         timers_.begin(boundsTimer);
+        counters_.begin(slots.bounds());
         samples = reduceSamples(s, aspect);
+        counters_.end(slots.bounds());
         timers_.end(boundsTimer);
     }
     plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds, reduce ? &samples : nullptr);
@@ -49,9 +76,12 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     if (moments) {
         // Made from the maps just drawn, with the filter's figures of the cascade block.
         timers_.begin(filterTimer);
+        counters_.begin(slots.moments());
         cascadeBlock_.bind(ST_BLOCK_CASCADES);
         moments_.build(shadowMaps_, s);
+        counters_.end(slots.moments());
         timers_.end(filterTimer);
+        ownWork_[std::size_t(slots.moments())] = moments_.buildWork(s.filter.blurRadius);
         stats.filterMapBytes = moments_.bytes();
     }
     // The side camera's image filters the maps itself: the mask is the main camera's screen.
@@ -82,7 +112,35 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.gpuScreenBlurMs = screen_->blurMs();
         stats.gpuFilterMs += stats.gpuScreenShadowMs;
     }
+    countWork(s, reduce, moments, screen, stats);
     return stats;
+}
+
+void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats) const {
+    const CounterSlots slots{s.cascades.count};
+    auto slotWork = [&](int slot) {
+        PassWork w = counters_.read(slot);
+        w += ownWork_[std::size_t(slot)];
+        return w;
+    };
+    FrameWork& fw = stats.work;
+    for (int i = 0; i < s.cascades.count; ++i) {
+        // A kept map did no work this frame, whatever the (empty) queries say.
+        fw.cascades.push_back(stats.cascades[std::size_t(i)].redrawn ? slotWork(i) : PassWork{});
+        fw.shadow += fw.cascades.back();
+    }
+    const csm::FilterTaps taps = csm::filterTapsPerFragment(s.filter, s.bias.receiverPlane);
+    fw.main = slotWork(slots.main());
+    // With the screen-space path the main pass reads one R32F factor per fragment instead.
+    addFilterReads(fw.main, screen ? csm::FilterTaps{1, 1, 4} : taps);
+    if (reduce) fw.depthBounds = slotWork(slots.bounds());
+    if (moments) fw.filter += slotWork(slots.moments());
+    if (screen) {
+        PassWork mask = slotWork(slots.mask());
+        addFilterReads(mask, taps);
+        fw.filter += mask;
+        fw.filter += slotWork(slots.screenBlur());
+    }
 }
 
 csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
@@ -98,9 +156,16 @@ csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
     viewBlock_.bind(ST_BLOCK_VIEW);
     drawVisible(proj * csm::viewMatrix(cam));  // culled and batched, as the main pass will draw it
     if (!depthBounds_) depthBounds_ = std::make_unique<DepthBoundsPass>();
+    // Cleared and drawn into, then read by each reduction (D32F).
+    PassWork& own = ownWork_[std::size_t(CounterSlots{s.cascades.count}.bounds())];
+    const std::uint64_t texels = pixels(target_.width(), target_.height());
+    own.draws = visibleCommands_;
+    own.texelsCleared = texels;
+    own.bytesRead = 4 * texels;
     csm::SampleBounds out;
     out.depth = depthBounds_->depthRange(target_.depthTexture(), target_.width(), target_.height(), proj);
     if (s.cascades.fit == FitMode::Samples) {
+        own.bytesRead += 4 * texels;
         const glm::mat4 lsView = csm::lightViewMatrix(csm::lightDirection(s.light.azimuth, s.light.elevation));
         out.lsCascade = depthBounds_->cascadeBounds(target_.depthTexture(), target_.width(), target_.height(), proj,
                                                     lsView * csm::inverseViewMatrix(cam), csm::planSplits(s, out.depth));
@@ -156,8 +221,11 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
         gpu::DebugGroup cascadeGroup(name.c_str());
         CascadeStats cs;
         timers_.begin(i);
-        if (options_.naive) naiveCascadeCasters(s, i, state, cs);
-        else cascadeCasters(s, i, state, cs);
+        counters_.begin(i);
+        PassWork& own = ownWork_[std::size_t(i)];
+        if (options_.naive) naiveCascadeCasters(s, i, state, cs, own);
+        else cascadeCasters(s, i, state, cs, own);
+        counters_.end(i);
         timers_.end(i);
         const csm::CascadeFit& fit = plan_.cascades[i];  // after: a kept map may bring its own
         cs.vsNear = fit.vsNear;
@@ -178,11 +246,15 @@ void Renderer::bindShadingInputs() const {
 
 void Renderer::renderSideView(const Settings& s, const OrbitCamera& orbit, OffscreenTarget& out) {
     timers_.beginFrame(s.cascades.count + 1);
+    counters_.beginFrame(CounterSlots{s.cascades.count}.total());  // counted, never read
+    ownWork_.assign(std::size_t(CounterSlots{s.cascades.count}.total()), PassWork{});
     sidePass(s, orbit, out);
 }
 
 void Renderer::renderMainView(const Settings& s, OffscreenTarget& out) {
     timers_.beginFrame(s.cascades.count + 1);
+    counters_.beginFrame(CounterSlots{s.cascades.count}.total());  // counted, never read
+    ownWork_.assign(std::size_t(CounterSlots{s.cascades.count}.total()), PassWork{});
     const bool screen = s.filter.screenSpace == ScreenSpace::Blur;
     if (screen) buildScreenShadow(s, plan_.csProj * plan_.vsView, out.width(), out.height());
     mainPass(s, plan_.csProj * plan_.vsView, out, screen);
@@ -191,7 +263,20 @@ void Renderer::renderMainView(const Settings& s, OffscreenTarget& out) {
 void Renderer::buildScreenShadow(const Settings& s, const glm::mat4& viewProj, int width, int height) {
     if (!screen_) screen_ = std::make_unique<ScreenShadow>();
     bindShadingInputs();
-    screen_->build(s, viewProj, width, height, [&] { drawVisible(viewProj); });
+    const CounterSlots slots{s.cascades.count};
+    // The mask pass's counters from its setup to its last draw; the blurs' from there on.
+    counters_.begin(slots.mask());
+    screen_->build(s, viewProj, width, height, [&] {
+        drawVisible(viewProj);
+        counters_.end(slots.mask());
+        counters_.begin(slots.screenBlur());
+    });
+    counters_.end(slots.screenBlur());
+    PassWork& mask = ownWork_[std::size_t(slots.mask())];
+    mask.draws = visibleCommands_;
+    mask.texelsCleared = pixels(width, height);
+    mask.bytesWritten = pixels(width, height) * (8 + 4);  // RG32F mask and its D32F depth
+    ownWork_[std::size_t(slots.screenBlur())] = screen_->blurWork(s.filter);
     shadowMaps_.unbindSamplers();
     glBindSampler(ST_BINDING_MOMENTS, 0);
 }
@@ -212,7 +297,9 @@ void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const Offsc
 
 void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen) {
     gpu::DebugGroup group("main pass");
+    const CounterSlots slots{s.cascades.count};
     timers_.begin(s.cascades.count);
+    counters_.begin(slots.main());
     gpu::applyPassState(gpu::opaqueScenePass(target.framebuffer(), target.width(), target.height()));
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -228,7 +315,11 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     shadowMaps_.unbindSamplers();
     glBindSampler(ST_BINDING_MOMENTS, 0);
     if (screen) screen_->unbind();
+    counters_.end(slots.main());
     timers_.end(s.cascades.count);
+    PassWork& own = ownWork_[std::size_t(slots.main())];
+    own.draws = visibleCommands_;
+    own.texelsCleared = pixels(target.width(), target.height());
 }
 
 }  // namespace st

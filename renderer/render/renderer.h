@@ -14,6 +14,7 @@
 #include "renderer/render/line_pass.h"
 #include "renderer/render/moment_maps.h"
 #include "renderer/render/offscreen_target.h"
+#include "renderer/render/pass_counters.h"
 #include "renderer/render/scene_gpu.h"
 #include "renderer/render/screen_shadow.h"
 #include "renderer/render/shadow_maps.h"
@@ -83,8 +84,9 @@ private:
     void shadowPass(const Settings& s, FrameStats& stats);
     // Cascade i of the clustered path (caster_pass.cpp): culls, then redraws or keeps the map.
     // `state` is the pass state ShadowMaps::beginCascade applies with cascade i's tile.
-    void cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs);
-    void naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs);
+    // Both add the renderer's own counts of a redrawn map to `work` (draws, texels, bytes).
+    void cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs, PassWork& work);
+    void naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs, PassWork& work);
     // SDSM: the main camera's depth drawn into the target (a prepass of this frame) and reduced.
     csm::SampleBounds reduceSamples(const Settings& s, float aspect);
     void recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const;
@@ -98,6 +100,9 @@ private:
     // The scene's triangles inside viewProj's frustum, with per-material face culling.
     void drawVisible(const glm::mat4& viewProj);
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
+    // The counted work of the last render(): pipeline statistics of each slot plus the renderer's
+    // own counts (pass_work.h).
+    void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats) const;
     SceneGpu scene_;
     gpu::Program depthProgram_;
     gpu::Program mainProgram_;
@@ -105,6 +110,7 @@ private:
     MomentMaps moments_;
     std::unique_ptr<ScreenShadow> screen_;  // on first use
     GpuTimers timers_;
+    PassCounters counters_;  // slots as the timers' (CounterSlots in renderer.cpp)
     LinePass lines_;
     OffscreenTarget target_;
     csm::CascadePlan plan_;
@@ -118,6 +124,8 @@ private:
     std::vector<CascadeStats> held_;  // figures of each map as last drawn
     std::size_t mainTriangles_ = 0;
     int mainDraws_ = 0;
+    std::uint64_t visibleCommands_ = 0;  // draw commands of the last drawVisible (multi-draw ranges)
+    std::vector<PassWork> ownWork_;      // the renderer's own counts of this frame, by counter slot
 };
 
 }  // namespace st

@@ -128,6 +128,20 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
     glBindTextureUnit(ST_BINDING_SCREEN_FULL, 0);
 }
 
+PassWork ScreenShadow::blurWork(const FilterSettings& f) const {
+    const std::uint64_t full = std::uint64_t(width_) * std::uint64_t(height_);
+    const std::uint64_t low = std::uint64_t(screenLowSize(width_, n_)) * std::uint64_t(screenLowSize(height_, n_));
+    const std::uint64_t n2 = std::uint64_t(n_) * std::uint64_t(n_);
+    const std::uint64_t blurTaps = 2u * std::uint64_t(f.screenBlurRadius) + 2u;  // centre and 2r + 1
+    constexpr std::uint64_t kRg32f = 8, kR32f = 4;
+    PassWork w;
+    w.draws = 4;
+    w.filterTaps = low * 2u * n2 + 2u * low * blurTaps + full * 5u;
+    w.bytesRead = w.filterTaps * kRg32f;  // every source is RG32F
+    w.bytesWritten = 3u * low * kRg32f + full * kR32f;
+    return w;
+}
+
 void ScreenShadow::bindForSampling() const {
     glBindTextureUnit(ST_BINDING_SCREEN_SHADOW, result_.id());
     glBindSampler(ST_BINDING_SCREEN_SHADOW, 0);

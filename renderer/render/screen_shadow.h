@@ -9,6 +9,7 @@
 #include "renderer/gpu/gl.h"
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/gpu_timer.h"
+#include "renderer/render/pass_work.h"
 #include "renderer/settings/settings.h"
 #include "shaders/interface.h"
 
@@ -44,6 +45,11 @@ public:
     // ST_BLOCK_VIEW bound to its own buffer: the caller uploads and binds its view block after.
     void build(const Settings& s, const glm::mat4& viewProj, int width, int height,
                const std::function<void()>& drawScene);
+    // The renderer's own counts of the last build()'s downsample, blurs and upsample for f: four
+    // fullscreen draws; texel fetches at the shaders' full loop lengths (the downsample reads its
+    // N x N block twice, each blur its centre and 2r + 1 taps, the upsample the full-size texel
+    // and four downsampled ones); the three downsampled targets and the R32F result written.
+    PassWork blurWork(const FilterSettings& f) const;
     void bindForSampling() const;  // the upsampled factor at ST_BINDING_SCREEN_SHADOW
     void unbind() const;
     GLuint maskTexture() const { return mask_.id(); }      // RG32F: factor, view depth (0: none)

@@ -32,6 +32,20 @@ TEST(CostTest, MediansAndCounts) {
     EXPECT_EQ(c.shadowMapBytes, 524288u);
 }
 
+TEST(CostTest, MinimumAndMaximumBesideTheMedian) {
+    const CostReport c = summariseCost({frame(9.0, 4.0), frame(1.0, 8.0), frame(3.0, 6.0)}, {1000, 65536}, 256);
+    EXPECT_EQ(c.gpuShadowRange, (TimeRange{1.0, 9.0}));
+    EXPECT_EQ(c.gpuMainRange, (TimeRange{2.0, 2.0}));
+}
+
+TEST(CostTest, CarriesTheWorkOfTheTimedFramesWhichMustAgree) {
+    std::vector<FrameStats> frames{frame(9.0, 4.0), frame(1.0, 8.0)};
+    for (FrameStats& f : frames) f.work.main.fragments = 230400;
+    EXPECT_EQ(summariseCost(frames, {}, 256).work.main.fragments, 230400u);
+    frames[1].work.main.fragments = 230399;  // a counter that moved between runs of the same settings
+    EXPECT_THROW(summariseCost(frames, {}, 256), std::logic_error);
+}
+
 TEST(CostTest, MedianOfNothingIsZeroAndNoFramesIsAnError) {
     EXPECT_EQ(median({}), 0.0);
     EXPECT_EQ(median({4.0, 1.0}), 4.0);  // upper median

@@ -1,0 +1,175 @@
+// Counted work per pass (renderer/render/pass_work.h): the same settings give the same counts,
+// and each count equals an independent count on a scene whose answer is known.
+#include "renderer/csm/filter_taps.h"
+#include "renderer/render/pass_counters.h"
+#include "renderer/scene/scene.h"
+#include "tests/render/render_test_util.h"
+#include "tests/support/gl_fixture.h"
+
+#include <cstdint>
+
+using namespace st;
+
+namespace {
+class PassWorkGLTest : public test::GLTest {};
+
+// Looking straight down at the ground 1 m below, far from the box: the ground's two triangles
+// fill the view, nothing in front of them, so every pixel is shaded exactly once.
+Settings groundFillingTheView() {
+    Settings s = test::boxOverPlaneView({10.0f, 1.0f, 10.0f}, {10.0f, 0.0f, 10.2f}, 50.0f);
+    s.output.width = 160;
+    s.output.height = 90;
+    s.cascades.count = 2;
+    s.cascades.mapSize = 256;
+    return s;
+}
+
+std::uint64_t u64(std::size_t v) { return std::uint64_t(v); }
+
+// Fragment-shader invocations of passes that cover `pixels` pixels exactly once. Drivers may count
+// more than the pixels covered: llvmpipe (Mesa 22.3) shades in 4x4 blocks and counts a W x H
+// fullscreen triangle as W x (H + 4) (measured at 64..512 texels per side), the ground's two
+// triangles at 160x90 as 15440. So: at least every pixel, and within 10 %.
+void expectCovers(std::uint64_t fragments, std::uint64_t pixels, const char* what) {
+    EXPECT_GE(fragments, pixels) << what;
+    EXPECT_LE(fragments, pixels + pixels / 10) << what;
+}
+
+FrameStats redrawn(Renderer& r, const Settings& s) {
+    r.invalidateMaps();
+    return r.render(s);
+}
+}  // namespace
+
+TEST_F(PassWorkGLTest, TheContextCountsPipelineStatistics) {
+    EXPECT_TRUE(PassCounters().supported()) << "llvmpipe has ARB_pipeline_statistics_query";
+}
+
+TEST_F(PassWorkGLTest, TheSameSettingsTwiceGiveTheSameWork) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    Settings s = test::boxOverPlaneView({6.0f, 5.0f, 8.0f}, {0.0f, 1.0f, 0.0f}, 60.0f);
+    s.output.width = 200;
+    s.output.height = 120;
+    r.render(s);  // first-use allocations
+    const FrameStats a = redrawn(r, s);
+    const FrameStats b = redrawn(r, s);
+    EXPECT_EQ(a.work, b.work);
+    EXPECT_GT(a.work.main.fragments, 0u);
+    EXPECT_GT(a.work.shadow.fragments, 0u);
+    EXPECT_EQ(a.work.cascades.size(), std::size_t(s.cascades.count));
+}
+
+TEST_F(PassWorkGLTest, TheGroundFillingTheViewShadesEachPixelOnce) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    const Settings s = groundFillingTheView();
+    const FrameStats f = redrawn(r, s);
+    const PassWork& m = f.work.main;
+    ASSERT_EQ(f.mainTriangles, 2u) << "only the ground is in view";
+    expectCovers(m.fragments, u64(160 * 90), "main pass");
+    EXPECT_EQ(m.primitives, 2u);
+    EXPECT_EQ(m.clippedPrimitives, 2u);
+    EXPECT_EQ(m.vertices, 6u);
+    EXPECT_EQ(m.draws, 1u);  // one range of one multi-draw
+    EXPECT_EQ(m.texelsCleared, u64(160 * 90));
+    // pcf2x2: one bilinear compare of 4 D32F texels per fragment.
+    EXPECT_EQ(m.filterTaps, m.fragments);
+    EXPECT_EQ(m.bytesRead, m.fragments * 4u * 4u);
+    EXPECT_EQ(m.computeInvocations, 0u);
+    EXPECT_EQ(f.work.filter, PassWork{});
+    EXPECT_EQ(f.work.depthBounds, PassWork{});
+}
+
+TEST_F(PassWorkGLTest, EachRedrawnMapCountsItsTexelsAndCasters) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    const Settings s = groundFillingTheView();
+    const FrameStats f = redrawn(r, s);
+    PassWork sum;
+    for (int i = 0; i < s.cascades.count; ++i) {
+        const PassWork& w = f.work.cascades[std::size_t(i)];
+        const CascadeStats& c = f.cascades[std::size_t(i)];
+        ASSERT_TRUE(c.redrawn);
+        EXPECT_EQ(w.texelsCleared, u64(256 * 256)) << i;
+        EXPECT_EQ(w.bytesWritten, u64(4 * 256 * 256)) << i;  // D32F
+        EXPECT_EQ(w.primitives, u64(c.casterTriangles)) << i;
+        EXPECT_EQ(w.vertices, 3u * u64(c.casterTriangles)) << i;
+        EXPECT_GT(w.fragments, 0u) << i;
+        EXPECT_EQ(w.filterTaps, 0u) << i;
+        sum += w;
+    }
+    EXPECT_EQ(f.work.shadow, sum);
+}
+
+TEST_F(PassWorkGLTest, AKeptMapDidNoWork) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    const Settings s = groundFillingTheView();
+    const FrameStats first = redrawn(r, s);
+    const FrameStats second = r.render(s);  // still camera: every map kept
+    for (int i = 0; i < s.cascades.count; ++i) {
+        EXPECT_FALSE(second.cascades[std::size_t(i)].redrawn) << i;
+        EXPECT_EQ(second.work.cascades[std::size_t(i)], PassWork{}) << i;
+        EXPECT_NE(first.work.cascades[std::size_t(i)], PassWork{}) << i;
+    }
+    EXPECT_EQ(second.work.shadow, PassWork{});
+    EXPECT_EQ(second.work.main, first.work.main);  // the main pass is drawn every frame
+}
+
+TEST_F(PassWorkGLTest, MomentMapsAreTwoFullscreenPassesPerLayer) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    Settings s = groundFillingTheView();
+    s.filter.kind = FilterKind::Vsm;
+    s.filter.blurRadius = 2;
+    const FrameStats f = redrawn(r, s);
+    const std::uint64_t texels = 2u * 256u * 256u;  // two layers
+    const PassWork& w = f.work.filter;
+    EXPECT_EQ(w.draws, 4u);
+    expectCovers(w.fragments, 2u * texels, "moment passes");  // the fullscreen triangle covers each texel once
+    EXPECT_EQ(w.primitives, 4u);
+    EXPECT_EQ(w.filterTaps, 2u * texels * 5u);
+    EXPECT_EQ(w.bytesRead, texels * 5u * (4u + 16u));  // depth, then the RGBA32F scratch
+    EXPECT_EQ(w.bytesWritten, texels * (16u + 8u));    // scratch, then RG32F moments
+    EXPECT_EQ(momentFormat(FilterKind::Vsm, false).bytesPerTexel, csm::momentBytesPerTexel(FilterKind::Vsm, false));
+    EXPECT_EQ(momentFormat(FilterKind::Msm, true).bytesPerTexel, csm::momentBytesPerTexel(FilterKind::Msm, true));
+    // The main pass fetches the moments once per fragment: 4 RG32F texels.
+    EXPECT_EQ(f.work.main.filterTaps, f.work.main.fragments);
+    EXPECT_EQ(f.work.main.bytesRead, f.work.main.fragments * 4u * 8u);
+}
+
+TEST_F(PassWorkGLTest, TheDepthReductionRunsOneInvocationPerFourByFourTexels) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    Settings s = groundFillingTheView();
+    s.cascades.depthBounds = DepthBounds::Fit;
+    const FrameStats f = redrawn(r, s);
+    const PassWork& w = f.work.depthBounds;
+    // ceil(160 / 64) x ceil(90 / 64) groups of 16 x 16 (shaders/depth_bounds_comp.glsl).
+    EXPECT_EQ(w.computeInvocations, 3u * 2u * 256u);
+    expectCovers(w.fragments, u64(160 * 90), "depth prepass");  // one layer of ground
+    EXPECT_EQ(w.primitives, 2u);
+    EXPECT_EQ(w.texelsCleared, u64(160 * 90));
+    EXPECT_EQ(w.bytesRead, u64(4 * 160 * 90));
+}
+
+TEST_F(PassWorkGLTest, TheScreenSpacePathFiltersInItsMaskAndTheMainPassReadsOneFactor) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    Settings s = groundFillingTheView();
+    s.filter.screenSpace = ScreenSpace::Blur;
+    s.filter.screenDownsample = 2;
+    s.filter.screenBlurRadius = 1;
+    const FrameStats f = redrawn(r, s);
+    const std::uint64_t full = 160u * 90u, low = 80u * 45u;
+    // The mask (every pixel once) and four fullscreen passes: 3 at low size, 1 at full size.
+    expectCovers(f.work.filter.fragments, full + 3u * low + full, "screen-space passes");
+    EXPECT_EQ(f.work.filter.draws, 1u + 4u);
+    // Mask: pcf2x2's one tap per fragment shaded; downsample 2 x 2^2, blurs 1 + 3 each, upsample 5.
+    const std::uint64_t blurTaps = low * 8u + 2u * low * 4u + full * 5u;
+    ASSERT_GT(f.work.filter.filterTaps, blurTaps);
+    expectCovers(f.work.filter.filterTaps - blurTaps, full, "mask taps");
+    EXPECT_EQ(f.work.main.filterTaps, f.work.main.fragments);
+    EXPECT_EQ(f.work.main.bytesRead, f.work.main.fragments * 4u);  // one R32F factor
+}
