@@ -83,7 +83,7 @@ void printPointLine(const std::string& counter, const std::string& name, const S
 void printProfile(const metrics::CostProfile& p) {
     for (metrics::PassKind k : metrics::kPassKinds) {
         const metrics::PassModel& m = p.pass(k);
-        std::printf("  %-11s %3d samples, R² %.3f:", metrics::passKindName(k), m.samples, m.r2);
+        std::printf("  %-11s %3d samples, R² %.3f against its own timers:", metrics::passKindName(k), m.samples, m.r2);
         for (const metrics::Term& t : m.terms) std::printf(" %s %.4g", metrics::featureName(t.feature), t.msPerUnit);
         std::printf("\n");
     }
@@ -95,7 +95,7 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     SceneCache<> scenes;
     std::vector<metrics::CalibrationSample> samples;
     std::vector<std::pair<FrameWork, metrics::TimedFrames>> timed;
-    std::vector<std::string> failed;
+    std::vector<std::string> failed, timedNames;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const CalibrationPoint& p = points[i];
         const std::string counter = "calibrate [" + std::to_string(i + 1) + "/" + std::to_string(points.size()) + "]";
@@ -104,12 +104,19 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
             printPointLine(counter, p.name, p.settings, t, nullptr);
             for (metrics::CalibrationSample& s : metrics::passSamples(p.name, t)) samples.push_back(std::move(s));
             timed.emplace_back(t.work, std::move(t));
+            timedNames.push_back(p.name);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s %s: error: %s\n", counter.c_str(), p.name.c_str(), e.what());
             failed.push_back(p.name);
         }
     }
-    metrics::CostProfile profile = metrics::fitProfile(samples);
+    std::vector<metrics::CalibrationFrame> frames;
+    for (const auto& [work, t] : timed) {
+        const std::vector<double> totals = metrics::frameTotalsMs(t);
+        frames.push_back({"", work, metrics::minimum(totals), metrics::median(totals)});
+    }
+    for (std::size_t i = 0; i < frames.size(); ++i) frames[i].preset = timedNames[i];
+    metrics::CostProfile profile = metrics::fitProfileOnFrames(frames, samples);
     profile.renderer = ctx.rendererName();
     profile.machine = machineText();
     profile.date = utcNow();
@@ -117,6 +124,7 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     metrics::saveCostProfileAtomic(profile, opt.out);
     std::printf("cost profile for %s (%s) in %s\n", profile.renderer.c_str(), profile.machine.c_str(),
                 opt.out.string().c_str());
+    std::printf("  frame totals: R² %.3f (%s)\n", profile.frameR2, profile.fittedOn.c_str());
     printProfile(profile);
     FrameComparison fit;
     for (const auto& [work, t] : timed) fit.add(metrics::modelFrame(profile, work).totalMs, t);

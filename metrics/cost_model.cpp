@@ -68,10 +68,10 @@ double featureValue(const PassWork& w, Feature f) {
 std::vector<Feature> defaultFeatures(PassKind k) {
     using F = Feature;
     switch (k) {
-        case PassKind::Cascade: return {F::Intercept, F::Vertices, F::ClippedPrimitives, F::Fragments, F::TexelsCleared};
-        case PassKind::Main: return {F::Intercept, F::Vertices, F::ClippedPrimitives, F::Fragments, F::FilterTaps};
-        case PassKind::Filter: return {F::Intercept, F::Fragments, F::ComputeInvocations, F::FilterTaps};
-        case PassKind::DepthBounds: return {F::Intercept, F::Vertices, F::Fragments, F::ComputeInvocations};
+        case PassKind::Cascade: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::TexelsCleared};
+        case PassKind::Main: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::FilterTaps};
+        case PassKind::Filter: return {F::Intercept, F::Fragments, F::FilterTaps};
+        case PassKind::DepthBounds: return {F::Intercept, F::Fragments, F::ComputeInvocations};
     }
     return {};
 }
@@ -124,7 +124,7 @@ PassModel fitPass(const std::vector<Feature>& features, const std::vector<Calibr
 
 CostProfile fitProfile(const std::vector<CalibrationSample>& samples, const FitOptions& opt) {
     CostProfile p;
-    p.fittedOn = "min";
+    p.fittedOn = "pass minimum";
     for (PassKind k : kPassKinds) {
         std::vector<CalibrationSample> ofKind;
         std::copy_if(samples.begin(), samples.end(), std::back_inserter(ofKind),
@@ -132,6 +132,67 @@ CostProfile fitProfile(const std::vector<CalibrationSample>& samples, const FitO
         p.pass(k) = fitPass(defaultFeatures(k), ofKind, opt);
     }
     for (const CalibrationSample& s : samples)
+        p.residuals.push_back({s.preset, s.pass, s.minMs, s.medianMs, modelPass(p.pass(s.kind), s.work)});
+    return p;
+}
+
+namespace {
+// The frame's work of `kind` summed over its passes, per feature.
+double frameFeature(const FrameWork& w, PassKind kind, Feature f) {
+    switch (kind) {
+        case PassKind::Cascade: {
+            double sum = 0.0;
+            for (const PassWork& c : w.cascades) sum += featureValue(c, f);
+            return sum;
+        }
+        case PassKind::Main: return featureValue(w.main, f);
+        case PassKind::Filter: return featureValue(w.filter, f);
+        case PassKind::DepthBounds: return featureValue(w.depthBounds, f);
+    }
+    return 0.0;
+}
+}  // namespace
+
+CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
+                               const std::vector<CalibrationSample>& passes, const FitOptions& opt) {
+    std::vector<std::pair<PassKind, Feature>> columns;
+    for (PassKind k : kPassKinds)
+        for (Feature f : defaultFeatures(k)) columns.emplace_back(k, f);
+    Matrix a;
+    std::vector<double> b;
+    for (const CalibrationFrame& fr : frames) {
+        const double weight = opt.relative ? 1.0 / std::max(fr.minMs, opt.floorMs) : 1.0;
+        std::vector<double> row;
+        for (const auto& [k, f] : columns) row.push_back(weight * frameFeature(fr.work, k, f));
+        a.push_back(std::move(row));
+        b.push_back(weight * fr.minMs);
+    }
+    CostProfile p;
+    p.fittedOn = "frame minimum";
+    const std::vector<double> x = frames.empty() ? std::vector<double>(columns.size(), 0.0) : nnls(a, b);
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+        const auto& [k, f] = columns[j];
+        p.pass(k).terms.push_back({f, x[j]});
+    }
+    std::vector<double> measured, modelled;
+    for (const CalibrationFrame& fr : frames) {
+        measured.push_back(fr.minMs);
+        modelled.push_back(modelFrame(p, fr.work).totalMs);
+        p.residuals.push_back({fr.preset, "frame", fr.minMs, fr.medianMs, modelled.back()});
+    }
+    p.frameR2 = rSquared(measured, modelled);
+    for (PassKind k : kPassKinds) {
+        std::vector<double> m, pred;
+        for (const CalibrationSample& s : passes) {
+            if (s.kind != k || !didWork(s.work)) continue;
+            m.push_back(s.minMs);
+            pred.push_back(modelPass(p.pass(k), s.work));
+        }
+        p.pass(k).samples = int(m.size());
+        p.pass(k).r2 = rSquared(m, pred);
+        if (m.empty()) p.pass(k).terms.clear();  // never seen: no evidence for any coefficient
+    }
+    for (const CalibrationSample& s : passes)
         p.residuals.push_back({s.preset, s.pass, s.minMs, s.medianMs, modelPass(p.pass(s.kind), s.work)});
     return p;
 }

@@ -69,7 +69,8 @@ struct CostProfile {
     std::string machine;   // CPU model and cores, or the GPU
     std::string date;      // ISO 8601 UTC of the calibration
     int frames = 0;        // timed frames per preset
-    std::string fittedOn = "min";  // which of the frames' times the coefficients were fitted on
+    std::string fittedOn = "frame minimum";  // which of the frames' times the coefficients were fitted on
+    double frameR2 = 0.0;  // of the modelled frame totals against the measured ones (the fitted figure)
     std::array<PassModel, 4> passes;  // by PassKind
     std::vector<Residual> residuals;
     PassModel& pass(PassKind k) { return passes[std::size_t(k)]; }
@@ -116,5 +117,23 @@ PassModel fitPass(const std::vector<Feature>& features, const std::vector<Calibr
 // Each kind fitted on its own samples with defaultFeatures(kind), and the residuals of all.
 // The caller fills renderer, machine, date and frames.
 CostProfile fitProfile(const std::vector<CalibrationSample>& samples, const FitOptions& opt = {});
+
+// What calibration measured for one frame: its counted work and its total GPU time (all passes).
+struct CalibrationFrame {
+    std::string preset;
+    FrameWork work;
+    double minMs = 0.0;
+    double medianMs = 0.0;
+};
+
+// All kinds' defaultFeatures fitted jointly on the frames' minimum totals: one row per frame,
+// one column per (kind, feature), holding the feature summed over the frame's passes of that
+// kind. What calibration fits: llvmpipe bins at draw time and rasterises when something flushes,
+// so its per-pass timers charge one pass's rasterisation to a later pass (a cascade reads 0 ms,
+// the moment filter that samples the maps reads them all), while the frame total is whole.
+// Each kind's R² is of its modelled pass times against `passes`' timers (per-pass figures,
+// for the record); frameR2 is the fit's. Residuals: each frame ("frame"), then each pass.
+CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
+                               const std::vector<CalibrationSample>& passes, const FitOptions& opt = {});
 
 }  // namespace st::metrics

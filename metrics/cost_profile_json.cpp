@@ -80,6 +80,7 @@ struct Reader {
         p.date = text(root, "", "date");
         p.frames = count(root, "", "frames");
         p.fittedOn = text(root, "", "fittedOn");
+        p.frameR2 = number(root, "", "frameR2");
         const Json& passes = member(root, "", "passes");
         object(passes, "passes");
         for (const auto& [name, value] : passes.items()) {
@@ -108,6 +109,7 @@ Json toJson(const CostProfile& p) {
     root["date"] = p.date;
     root["frames"] = p.frames;
     root["fittedOn"] = p.fittedOn;
+    root["frameR2"] = p.frameR2;
     Json passes = Json::object();
     for (PassKind k : kPassKinds) {
         const PassModel& m = p.pass(k);

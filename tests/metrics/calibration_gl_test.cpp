@@ -29,6 +29,16 @@ TEST_F(CalibrationGLTest, TimedFramesRedrawEveryMapAndSamplesArePerPass) {
     }
     EXPECT_TRUE(t.workStable);
     const std::vector<CalibrationSample> samples = passSamples("default", t);
+    // Every redrawn map and the main pass counted work: one sample each, no filter or bounds.
+    ASSERT_EQ(samples.size(), std::size_t(s.cascades.count) + 1);
+    for (int i = 0; i < s.cascades.count; ++i) {
+        EXPECT_EQ(samples[std::size_t(i)].kind, PassKind::Cascade);
+        EXPECT_EQ(samples[std::size_t(i)].pass, "cascade " + std::to_string(i));
+        const auto side = std::uint64_t(s.cascades.mapSize);
+        EXPECT_EQ(samples[std::size_t(i)].work.texelsCleared, side * side);
+    }
+    EXPECT_EQ(samples.back().kind, PassKind::Main);
+    EXPECT_GT(samples.back().work.fragments, 0u);
     for (const CalibrationSample& sample : samples) {
         std::vector<double> times;
         for (const FrameStats& f : t.frames) {

@@ -102,7 +102,9 @@ CostProfile knownProfile() {
     p.frames = 3;
     p.pass(PassKind::Cascade).terms = {{Feature::Intercept, 0.5}, {Feature::Fragments, 1e-6},
                                        {Feature::TexelsCleared, 2e-7}};
-    p.pass(PassKind::Main).terms = {{Feature::Intercept, 1.0}, {Feature::Vertices, 1e-4}, {Feature::Fragments, 3e-6}};
+    p.pass(PassKind::Main).terms = {{Feature::Intercept, 1.0}, {Feature::ClippedPrimitives, 3e-4},
+                                    {Feature::Fragments, 3e-6}};
+    p.frameR2 = 0.9375;
     p.pass(PassKind::Main).r2 = 0.875;
     p.pass(PassKind::Main).samples = 7;
     p.residuals = {{"default", "main", 2.5, 2.75, 2.625}, {"fox", "cascade 1", 0.25, 0.5, 0.375}};
@@ -142,6 +144,36 @@ TEST(CostModelTest, FitRecoversCoefficientsOfExactSamples) {
     ASSERT_EQ(p.residuals.size(), samples.size());
     for (const Residual& r : p.residuals) EXPECT_NEAR(r.modelMs, r.minMs, 1e-9 * r.minMs) << r.preset << " " << r.pass;
     EXPECT_EQ(p.residuals[0].medianMs, samples[0].medianMs);
+}
+
+// Frames whose total is exactly the known profile's: the joint fit reproduces every total, and
+// the kinds no frame had get no terms.
+TEST(CostModelTest, FitOnFramesReproducesExactTotals) {
+    const CostProfile truth = knownProfile();
+    std::vector<CalibrationFrame> frames;
+    std::vector<CalibrationSample> passes;
+    for (int i = 1; i <= 10; ++i) {
+        FrameWork w;
+        for (int c = 0; c < 1 + i % 4; ++c)
+            w.cascades.push_back(work(300u * std::uint64_t(i + c), 150'000u * std::uint64_t((i * 5 + c) % 9 + 1),
+                                      262'144u * std::uint64_t(1 + (i + c) % 4)));
+        w.main = work(999u * std::uint64_t((i * 3) % 7 + 1), 57'600u * std::uint64_t(i));
+        const double ms = modelFrame(truth, w).totalMs;
+        frames.push_back({"p" + std::to_string(i), w, ms, ms * 1.2});
+        passes.push_back({"p" + std::to_string(i), PassKind::Main, "main", w.main, 1.0, 1.0});
+    }
+    const CostProfile p = fitProfileOnFrames(frames, passes);
+    EXPECT_NEAR(p.frameR2, 1.0, 1e-9);
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        EXPECT_EQ(p.residuals[i].pass, "frame");
+        EXPECT_NEAR(p.residuals[i].modelMs, frames[i].minMs, 1e-6 * frames[i].minMs) << i;
+        EXPECT_EQ(p.residuals[i].medianMs, frames[i].medianMs);
+    }
+    EXPECT_EQ(p.residuals.size(), frames.size() + passes.size());
+    EXPECT_EQ(p.pass(PassKind::Main).samples, 10);
+    EXPECT_TRUE(p.pass(PassKind::Filter).terms.empty());
+    for (PassKind k : kPassKinds)
+        for (const Term& t : p.pass(k).terms) EXPECT_GE(t.msPerUnit, 0.0);
 }
 
 TEST(CostProfileJsonTest, RoundTrip) {
