@@ -150,8 +150,16 @@ int check(const CalibrateOptions& opt, const HeadlessContext& ctx) {
                      ctx.rendererName().c_str());
     SceneCache<> scenes;
     FrameComparison all;
+    int unreadable = 0;
     for (const fs::path& file : opt.check) {
-        const sweep::SweepSpec spec = sweep::loadSweep(file);
+        sweep::SweepSpec spec;
+        try {
+            spec = sweep::loadSweep(file);
+        } catch (const SettingsError& e) {  // the other sweeps still give figures
+            for (const std::string& m : e.messages()) std::fprintf(stderr, "error: %s\n", m.c_str());
+            ++unreadable;
+            continue;
+        }
         const std::vector<sweep::Point> points = expandPoints(spec);
         for (std::size_t i = 0; i < points.size(); i += std::size_t(opt.every)) {
             Settings s = points[i].settings;
@@ -166,7 +174,10 @@ int check(const CalibrateOptions& opt, const HeadlessContext& ctx) {
         }
     }
     all.print(("sweep points against " + profile.renderer).c_str());
-    return 0;
+    if (unreadable)
+        std::fprintf(stderr, "error: %d sweep files could not be read (above); their points are not in the figures\n",
+                     unreadable);
+    return unreadable ? 1 : 0;
 }
 
 }  // namespace
