@@ -92,7 +92,10 @@ void printSummary(const metrics::PresetMeasurement& m, const std::string& name, 
                 k.peterPanning, percent(k.share(k.missingCaster)).c_str(), k.missingCaster, m.soft.penumbra.filteredPx,
                 m.soft.penumbra.truthPx);
     if (m.flicker) std::printf(", flicker F %s", percent(m.flicker->flipRate).c_str());
-    if (m.cost) std::printf(", GPU shadow %.1f ms main %.1f ms", m.cost->gpuShadowMs, m.cost->gpuMainMs);
+    if (m.cost)
+        std::printf(", GPU shadow %.1f ms (%.1f..%.1f) main %.1f ms (%.1f..%.1f) over %d redrawn frames",
+                    m.cost->gpuShadowMs, m.cost->gpuShadowRange.minMs, m.cost->gpuShadowRange.maxMs, m.cost->gpuMainMs,
+                    m.cost->gpuMainRange.minMs, m.cost->gpuMainRange.maxMs, m.cost->frames);
     std::printf(" | ground truth %.3f s, soft truth %.3f s, total %.2f s -> %s\n", m.timings.groundTruthMs / 1000.0,
                 m.timings.softTruthMs / 1000.0, m.timings.totalMs / 1000.0, dir.string().c_str());
     std::fflush(stdout);

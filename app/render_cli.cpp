@@ -50,7 +50,7 @@ void addRenderCommand(CLI::App& cli, int& exitCode) {
     render->add_option("--view", args->view, "Override the view: shaded, cascades, shadow, texel-density, side");
     render->add_option("--size", args->size, "Override the output size, WxH (e.g. 1280x720)");
     render->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
-    render->add_option("--frames", args->opt.frames, "Render each preset N times and print median times (benchmark)")
+    render->add_option("--frames", args->opt.frames, "Time N frames of each preset (after an untimed warm-up, every map redrawn) and print median, minimum and maximum")
         ->check(CLI::Range(1, 10000));
     addWarningOptions(*render, args->opt.warningLimits);
     render->callback([args, &exitCode] { exitCode = applyOverrides(*args) ? runRender(args->opt) : 2; });

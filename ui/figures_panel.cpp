@@ -2,6 +2,7 @@
 
 #include "ui/field_rules.h"
 #include "ui/legends.h"
+#include "renderer/render/frame_stats_text.h"
 
 #include <imgui.h>
 
@@ -68,7 +69,8 @@ void costRow(int index, const CascadeStats& c) {
     ImGui::TableNextColumn();
     ImGui::Text("%zu / %zu", c.casterClusters, c.casterClustersTotal);
     ImGui::TableNextColumn();
-    ImGui::Text("%.2f ms", c.gpuMs);
+    if (c.redrawn) ImGui::Text("%.2f ms", c.gpuMs);
+    else ImGui::TextUnformatted("kept");  // no work this frame: its timer's 0 is no cost
     ImGui::TableNextColumn();
     ImGui::Text("%s: %s", c.redrawn ? "redrawn" : "cached", c.mapReason.c_str());
 }
@@ -129,7 +131,7 @@ void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& r
 }
 
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats) {
-    if (stats) ImGui::Text("GPU: shadow %.2f ms, main %.2f ms", stats->gpuShadowMs, stats->gpuMainMs);
+    if (stats) ImGui::Text("GPU: %s, main %.2f ms", shadowTimeText(*stats, 2).c_str(), stats->gpuMainMs);
     plot("GPU shadow", timing.gpuShadowMs);
     plot("GPU main", timing.gpuMainMs);
     plot("CPU frame", timing.cpuFrameMs);
