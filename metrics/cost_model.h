@@ -128,9 +128,9 @@ struct CalibrationFrame {
 
 // All kinds' defaultFeatures fitted jointly on the frames' minimum totals: one row per frame,
 // one column per (kind, feature), holding the feature summed over the frame's passes of that
-// kind. What calibration fits: llvmpipe bins at draw time and rasterises when something flushes,
-// so its per-pass timers charge one pass's rasterisation to a later pass (a cascade reads 0 ms,
-// the moment filter that samples the maps reads them all), while the frame total is whole.
+// kind. What calibration fits: llvmpipe's per-pass timers are not a clean target (in this
+// machine's calibration some cascades read 0.00 ms for a million-fragment pass and the moment
+// filter read ~1 s; docs/cost-model.md), while the frame total is whole and is what fronts rank.
 // Each kind's R² is of its modelled pass times against `passes`' timers (per-pass figures,
 // for the record); frameR2 is the fit's. Residuals: each frame ("frame"), then each pass.
 CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
