@@ -10,5 +10,6 @@ void addMeasureCommand(CLI::App& cli, int& exitCode);
 void addSweepCommand(CLI::App& cli, int& exitCode);
 void addCompareCommand(CLI::App& cli, int& exitCode);
 void addExportCommand(CLI::App& cli, int& exitCode);
+void addCalibrateCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     st::app::addSweepCommand(cli, exitCode);
     st::app::addCompareCommand(cli, exitCode);
     st::app::addExportCommand(cli, exitCode);
+    st::app::addCalibrateCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }
