@@ -118,6 +118,7 @@ private:
     std::vector<CascadeStats> held_;  // figures of each map as last drawn
     std::size_t mainTriangles_ = 0;
     int mainDraws_ = 0;
+    int mainRanges_ = 0;
 };
 
 }  // namespace st
