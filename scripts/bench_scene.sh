@@ -2,7 +2,8 @@
 # Scene benchmark of issue 11 (printed figures and ratios, never asserted): the clustered, culled,
 # cached renderer against the naive one in the same run (tests/bench/scene_bench.cpp).
 # usage: scripts/bench_scene.sh [BUILD_DIR]   (defaults to build/release; needs ../shared/assets
-#   for Truck Town, xvfb-run for the editor; SCALE="10000 100000" to shorten the scale series)
+#   for Truck Town, xvfb-run for the editor; SCALE="10000 100000" to shorten the scale series,
+#   CAMERAS=low to view it from one corner only)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
@@ -32,12 +33,19 @@ fi
 
 echo
 echo "== Scale series: boxes over a 400 m field, 1280x720, 4 x 2048 maps (generated into $out)"
-for tris in ${SCALE:-10000 100000 1000000}; do
+echo "   camera at the field's low corner (-x,-z) and its high corner (+x,+z): the clusters' build order is"
+echo "   front to back from the first, back to front from the second; 'passed depth' is the fragments shaded"
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+for tris in ${SCALE:-10000 100000 1200000}; do
   for layout in one-mesh nodes; do
-    preset=$(python3 "$root/scripts/gen_box_field.py" "$out" "$tris" "$layout")
-    nice "$bench" "$preset" --frames 3 | sed 's/^/  /'
+    for camera in ${CAMERAS:-low high}; do
+      preset=$(python3 "$root/scripts/gen_box_field.py" "$out" "$tris" "$layout" --camera "$camera")
+      echo "  -- $layout, camera $camera"
+      nice "$bench" "$preset" --frames 3 | sed 's/^/  /'
+    done
   done
 done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 if [[ -x $root/scripts/bench_depth_bounds.sh ]]; then
   echo

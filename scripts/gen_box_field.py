@@ -2,11 +2,13 @@
 """Writes a glTF field of boxes over a square (the scale series of scripts/bench_scene.sh) and a
 preset that looks across it. Generated at benchmark time into a temporary folder, never committed.
 
-  gen_box_field.py OUT_DIR TRIANGLES {one-mesh|nodes} [--field 400]
+  gen_box_field.py OUT_DIR TRIANGLES {one-mesh|nodes} [--field 400] [--camera low|high]
 
 one-mesh: every box in one primitive; nodes: one box mesh placed by one node per box (the loader
 flattens nodes to world space). Box positions come from a fixed-seed generator: the same field
-every run."""
+every run. The camera looks across the field from its low corner (-x, -z; default) or its high
+corner (+x, +z): the clusters' build order runs from the low corner, so the two views draw them
+front to back and back to front unless the renderer orders them."""
 import argparse, base64, json, os, random, struct
 
 FACES = [  # (normal, four corners of the unit box, counter-clockwise seen from outside)
@@ -36,6 +38,7 @@ def main():
     ap.add_argument("triangles", type=int)
     ap.add_argument("layout", choices=["one-mesh", "nodes"])
     ap.add_argument("--field", type=float, default=400.0)
+    ap.add_argument("--camera", choices=["low", "high"], default="low")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     boxes = max(1, a.triangles // 12)
@@ -60,6 +63,7 @@ def main():
     ioff = len(blob)
     blob += struct.pack("<%dI" % len(idx), *idx)
     name = "field_%d_%s" % (a.triangles, a.layout)
+    preset_name = name if a.camera == "low" else name + "_high"
     with open(os.path.join(a.out, name + ".bin"), "wb") as f:
         f.write(blob)
     lo = [min(p[i] for p in pos) for i in range(3)]
@@ -86,19 +90,20 @@ def main():
     }
     with open(os.path.join(a.out, name + ".gltf"), "w") as f:
         json.dump(gltf, f)
+    corner = -half - 5 if a.camera == "low" else half + 5
     preset = {
         "version": 1,
         "scene": name + ".gltf",
         "ground": True,
-        "camera": {"position": [-half - 5, 12.0, -half - 5], "target": [0.0, 0.0, 0.0], "fovY": 60.0,
+        "camera": {"position": [corner, 12.0, corner], "target": [0.0, 0.0, 0.0], "fovY": 60.0,
                    "nearPlane": 0.3, "farPlane": a.field * 1.6},
         "light": {"azimuth": 220.0, "elevation": 35.0},
         "cascades": {"count": 4, "mapSize": 2048, "fit": "sphere", "stabilize": True},
         "output": {"width": 1280, "height": 720},
     }
-    with open(os.path.join(a.out, name + ".json"), "w") as f:
+    with open(os.path.join(a.out, preset_name + ".json"), "w") as f:
         json.dump(preset, f, indent=1)
-    print(os.path.join(a.out, name + ".json"))
+    print(os.path.join(a.out, preset_name + ".json"))
 
 
 if __name__ == "__main__":

@@ -5,6 +5,11 @@
 #include "renderer/render/renderer.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
 
 namespace st {
 namespace {
@@ -104,26 +109,50 @@ void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassStat
 void Renderer::drawVisible(const glm::mat4& viewProj) {
     mainTriangles_ = 0;
     mainDraws_ = 0;
+    mainRanges_ = 0;
     if (options_.naive) {
         scene_.bindGeometry();
         for (const DrawItem& item : scene_.scene().draws) {
             scene_.draw(item, FaceCulling::PerMaterial);
             mainTriangles_ += item.indexCount / 3;
             ++mainDraws_;
+            ++mainRanges_;
         }
         visibleCommands_ = std::uint64_t(mainDraws_);
         return;
     }
     const auto planes = csm::frustumPlanes(viewProj);
     const std::vector<Cluster>& clusters = scene_.clustered().clusters;
+    // Front to back within each material: llvmpipe shades every fragment that passes the depth
+    // test when drawn, so the order of the clusters, not their count, sets the shading work.
+    // The build order follows the split tree, front to back only from its low corner
+    // (docs/architecture.md, "Lower bound of the shadow pass"). Clip z before the divide grows
+    // with view depth for perspective and orthographic cameras alike; the index breaks ties.
+    struct Visible {
+        int material;
+        float depth;
+        std::uint32_t index;
+    };
+    std::vector<Visible> visible;
+    const glm::vec4 depthRow(viewProj[0][2], viewProj[1][2], viewProj[2][2], viewProj[3][2]);
+    for (std::size_t k = 0; k < clusters.size(); ++k) {
+        if (!csm::aabbInFrustum(clusters[k].wsBounds, planes)) continue;
+        const glm::vec3 centre = 0.5f * (clusters[k].wsBounds.min + clusters[k].wsBounds.max);
+        visible.push_back({clusters[k].material, glm::dot(depthRow, glm::vec4(centre, 1.0f)), std::uint32_t(k)});
+    }
+    std::sort(visible.begin(), visible.end(), [](const Visible& a, const Visible& b) {
+        if (a.material != b.material) return a.material < b.material;
+        if (a.depth != b.depth) return a.depth < b.depth;
+        return a.index < b.index;
+    });
     batches_.clear();
-    for (std::size_t k = 0; k < clusters.size(); ++k)
-        if (csm::aabbInFrustum(clusters[k].wsBounds, planes)) batches_.add(clusters, k);
+    for (const Visible& v : visible) batches_.add(clusters, v.index);
     scene_.bindClusteredGeometry();
     scene_.drawBatches(batches_, FaceCulling::PerMaterial);
     mainTriangles_ = batches_.triangleCount();
     mainDraws_ = int(batches_.batches().size());
     visibleCommands_ = batches_.rangeCount();
+    mainRanges_ = int(batches_.rangeCount());
 }
 
 }  // namespace st

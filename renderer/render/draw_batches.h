@@ -21,7 +21,8 @@ struct DrawBatch {
 class DrawBatches {
 public:
     void clear();
-    // Appends cluster `index` of `clusters`; clusters must be added in ascending index order.
+    // Appends cluster `index` of `clusters`, in any order: a cluster that starts where the last
+    // range ends extends it, one of another material than the last starts a new batch.
     void add(const std::vector<Cluster>& clusters, std::size_t index);
     const std::vector<DrawBatch>& batches() const { return batches_; }
     std::size_t clusterCount() const { return clusters_; }

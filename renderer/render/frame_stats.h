@@ -63,6 +63,7 @@ struct FrameStats {
     double cpuMs = 0.0;        // CPU time to plan and submit the frame
     std::size_t mainTriangles = 0;  // submitted by the main pass after frustum culling of clusters
     int mainDraws = 0;
+    int mainRanges = 0;        // draw commands: the index ranges of mainDraws' multi-draws (naive: = mainDraws)
     FrameWork work;            // counted work per pass (pass_work.h), filled by Renderer::render
     std::size_t sceneTriangles = 0;
     int width = 0;

@@ -99,6 +99,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         mainPass(s, plan_.csProj * plan_.vsView, target_, screen);
     stats.mainTriangles = mainTriangles_;
     stats.mainDraws = mainDraws_;
+    stats.mainRanges = mainRanges_;
     stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (int i = 0; i < s.cascades.count; ++i) {
         stats.cascades[i].gpuMs = timers_.milliseconds(i);

@@ -126,6 +126,7 @@ private:
     int mainDraws_ = 0;
     std::uint64_t visibleCommands_ = 0;  // draw commands of the last drawVisible (multi-draw ranges)
     std::vector<PassWork> ownWork_;      // the renderer's own counts of this frame, by counter slot
+    int mainRanges_ = 0;
 };
 
 }  // namespace st

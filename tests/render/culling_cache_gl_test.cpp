@@ -248,3 +248,74 @@ TEST_F(CullingCacheGLTest, NaiveAndCacheOffRedrawEveryMapEveryFrame) {
             for (const auto& c : r.render(s).cascades) EXPECT_TRUE(c.redrawn) << c.mapReason;
     }
 }
+
+namespace {
+// Sheets of 2 x 2 m facing +z, one every 4 m along -z, each a 16 x 16 grid (512 triangles, so
+// the clusters split the stack between sheets before splitting a sheet). Double-sided: seen
+// from either end of the stack, every sheet is drawn, and the nearest hides all the others.
+Scene sheetStack(int sheets) {
+    Scene s;
+    s.materials.push_back(Material{.baseColor = {0.9f, 0.3f, 0.2f, 1.0f}, .doubleSided = true});
+    constexpr int n = 16;
+    for (int k = 0; k < sheets; ++k) {
+        const float z = -4.0f * float(k);
+        DrawItem item{.firstIndex = std::uint32_t(s.indices.size()), .material = 0};
+        const auto base = std::uint32_t(s.vertices.size());
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i)
+                s.vertices.push_back({{-1.0f + 2.0f * float(i) / n, -1.0f + 2.0f * float(j) / n, z}, {0, 0, 1}, {}});
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1, c = a + n + 1, d = c + 1;
+                s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
+            }
+        item.indexCount = std::uint32_t(s.indices.size()) - item.firstIndex;
+        s.draws.push_back(item);
+    }
+    finalizeBounds(s);
+    return s;
+}
+
+// Fragments that passed the depth test in one main pass of the last frame's plan.
+GLuint64 samplesPassedInMainPass(Renderer& r, const Settings& s, OffscreenTarget& out) {
+    GLuint q = 0;
+    glGenQueries(1, &q);
+    glBeginQuery(GL_SAMPLES_PASSED, q);
+    r.renderMainView(s, out);
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(q, GL_QUERY_RESULT, &n);
+    glDeleteQueries(1, &q);
+    return n;
+}
+}  // namespace
+
+// llvmpipe shades every fragment that passes the depth test when drawn, so the main pass draws
+// visible clusters front to back: from either end of a stack of sheets, only the nearest sheet's
+// fragments pass, as many as the pixels the image shows it on. The clusters' build order runs
+// along the stack, so without the ordering one of the two views would pass every sheet.
+TEST_F(CullingCacheGLTest, MainPassDrawsClustersFrontToBackFromEitherSide) {
+    constexpr int sheets = 8;
+    Scene scene = sheetStack(sheets);
+    Renderer r(scene);
+    ASSERT_GE(r.sceneGpu().clustered().clusters.size(), std::size_t(2 * sheets));
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.nearPlane = 0.3f;
+    s.camera.farPlane = 60.0f;
+    OffscreenTarget out;
+    out.ensure(s.output.width, s.output.height);
+    for (float eye : {6.0f, -4.0f * (sheets - 1) - 6.0f}) {
+        s.camera.position = {0.0f, 0.0f, eye};
+        s.camera.target = {0.0f, 0.0f, eye > 0 ? -1.0f : -4.0f * (sheets - 1) + 1.0f};
+        r.render(s);
+        const GLuint64 passed = samplesPassedInMainPass(r, s, out);
+        const std::vector<std::uint8_t> px = out.readRgba8();
+        std::uint64_t covered = 0;  // pixels other than the sky of the top-left corner
+        for (std::size_t i = 0; i + 3 < px.size(); i += 4)
+            covered += px[i] != px[0] || px[i + 1] != px[1] || px[i + 2] != px[2];
+        EXPECT_GT(covered, 0u) << "eye z " << eye;
+        EXPECT_EQ(passed, covered) << "eye z " << eye << ": fragments of hidden sheets were shaded";
+    }
+}
