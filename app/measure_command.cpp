@@ -56,7 +56,11 @@ report::LineChart pathChart(const metrics::FlickerReport& f, const std::string& 
     return c;
 }
 
-void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir) {
+// chartDrawn: whether a PLplot chart has been drawn in this run. Its Pango layouts keep cairo fonts
+// alive for good, and cairo_debug_reset_static_data() then aborts on an assertion, so the label
+// strips' text caches are released only until the first chart (a second preset after one with a
+// path crashed `measure`).
+void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, const fs::path& dir, bool& chartDrawn) {
     makeOutputDir(dir);
     writeImageAtomic(dir / "truth.png", metrics::truthImage(m.samples, m.truth));
     writeImageAtomic(dir / "errors.png",
@@ -67,10 +71,11 @@ void writeOutputs(const metrics::PresetMeasurement& m, const std::string& name, 
                   double(m.sun.angularDiameter), m.sun.rays, double(m.settings.measure.artifactTexels));
     writeImageAtomic(dir / "artifacts.png", withLegend(metrics::artifactImage(m.samples, m.softTruth, m.soft), title,
                                                        metrics::artifactLegend(m.softTruth, m.soft)));
-    releaseTextCaches();
+    if (!chartDrawn) releaseTextCaches();
     writeImageAtomic(dir / "texel-density.png", metrics::densityImage(m.samples));
     if (m.flicker) {
         writeImageAtomic(dir / "flicker.png", metrics::flickerImage(m.flickerStdDev, m.samples));
+        chartDrawn = true;
         report::writeLineChart(pathChart(*m.flicker, name), dir / "path.png", fs::path());
     }
     writeTextAtomic(dir / "metrics.json", metrics::toJson(m, name).dump(2) + "\n");
@@ -103,7 +108,8 @@ void printSummary(const metrics::PresetMeasurement& m, const std::string& name, 
 
 // The GL work of one preset (render, read back, ground truth, cost, flicker); the returned
 // writer saves the metrics and images and prints the summary.
-PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metrics::MeasureSession& session) {
+PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metrics::MeasureSession& session,
+                        const std::shared_ptr<bool>& chartDrawn) {
     Settings s = loadPreset(preset);
     if (opt.width) s.output.width = *opt.width;
     if (opt.height) s.output.height = *opt.height;
@@ -118,8 +124,8 @@ PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset
     };
     auto m = std::make_shared<const metrics::PresetMeasurement>(session.measure(s, preset.parent_path(), mo));
     for (const std::string& w : m->warnings) std::fprintf(stderr, "%s: warning: %s\n", preset.string().c_str(), w.c_str());
-    return [m, name, dir = opt.outDir / name] {
-        writeOutputs(*m, name, dir);
+    return [m, name, dir = opt.outDir / name, chartDrawn] {
+        writeOutputs(*m, name, dir, *chartDrawn);
         printSummary(*m, name, dir);
     };
 }
@@ -129,7 +135,10 @@ PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset
 int runMeasure(const MeasureCommandOptions& opt) {
     return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt]() -> PresetWork {
         auto session = std::make_shared<metrics::MeasureSession>();
-        return [&opt, session](const fs::path& preset) { return measureOne(opt, preset, *session); };
+        auto chartDrawn = std::make_shared<bool>(false);
+        return [&opt, session, chartDrawn](const fs::path& preset) {
+            return measureOne(opt, preset, *session, chartDrawn);
+        };
     });
 }
 

@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 #include <regex>
+#include <string>
+#include <string_view>
 
 namespace st::app {
 namespace {
@@ -40,6 +42,13 @@ bool applyOverrides(RenderArgs& a) {
     return true;
 }
 
+// "shaded, cascades, ...": every View the settings name, so the help never lags the enum.
+std::string viewNames() {
+    std::string text;
+    for (const std::string_view name : enumNames<View>()) text += (text.empty() ? "" : ", ") + std::string(name);
+    return text;
+}
+
 }  // namespace
 
 void addRenderCommand(CLI::App& cli, int& exitCode) {
@@ -47,7 +56,7 @@ void addRenderCommand(CLI::App& cli, int& exitCode) {
     CLI::App* render = cli.add_subcommand("render", "Replay presets headless (EGL) into PNG images and frame statistics");
     render->add_option("presets", args->opt.presets, "Preset JSON files")->required();
     render->add_option("--out", args->opt.outDir, "Output folder (created if missing)")->capture_default_str();
-    render->add_option("--view", args->view, "Override the view: shaded, cascades, shadow, texel-density, side");
+    render->add_option("--view", args->view, "Override the view: " + viewNames());
     render->add_option("--size", args->size, "Override the output size, WxH (e.g. 1280x720)");
     render->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
     render->add_option("--frames", args->opt.frames, "Time N frames of each preset (after an untimed warm-up, every map redrawn) and print median, minimum and maximum")

@@ -84,7 +84,7 @@ check "render of the installed default.json exits 0" test "$(cat "$work/rc")" = 
 check "render wrote a PNG" bash -c "head -c 8 '$work/o/default.png' | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a'"
 check "the PNG is 160x90" test "$(od -An -tu1 -j16 -N8 "$work/o/default.png" | tr -s ' ')" = " 0 0 0 160 0 0 0 90"
 check "render wrote frame statistics" grep -q '"splits"' "$work/o/default.json"
-# The scene presets are installed but their glTF files are not (see README "Install / package").
+# The scene presets are installed but their glTF files are not (see docs/install.md).
 run render "$P/share/shadowtune/presets/scenes/fox.json" --out "$work/o"
 check "a scene preset without its assets fails" test "$(cat "$work/rc")" = 1
 check "... saying the scene file is missing" err_has "shared/assets/fox/Fox.glb: scene file not found"
@@ -114,10 +114,10 @@ check "consumer without arguments uses the SplitParams defaults" close "$("$cons
 "$consumer" 0.1 400 0 0.5 >/dev/null 2>"$work/stderr"
 check "consumer reports a bad count" err_has "count"
 
-readme=$(cat "$src/README.md")
+page=$(cat "$src/docs/install.md")
 for f in CMakeLists.txt main.cpp; do
-  check "README.md shows examples/csm_consumer/$f verbatim" test -n "$(grep -F '' "$src/examples/csm_consumer/$f")" -a \
-    "${readme/"$(cat "$src/examples/csm_consumer/$f")"/}" != "$readme"
+  check "docs/install.md shows examples/csm_consumer/$f verbatim" test -n "$(grep -F '' "$src/examples/csm_consumer/$f")" -a \
+    "${page/"$(cat "$src/examples/csm_consumer/$f")"/}" != "$page"
 done
 
 echo "$failures failure(s)"

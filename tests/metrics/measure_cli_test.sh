@@ -51,6 +51,13 @@ check "default preset exits 0" rc 0
 check "default writes path.png" test -s "$work/default/default/path.png"
 check "path.png is a 1200x900 chart" bash -c "oiiotool --info '$work/default/default/path.png' | grep -q '1200 x  900'"
 
+# Presets after one with a path: its chart's Pango fonts stay alive, and freeing the text caches
+# for the next preset's legends used to abort (cairo's static-data assertion, exit 134).
+run measure "$work/with-path.json" "$presets/box-over-plane.json" "$work/with-path.json" --out "$work/after-path" \
+  --size 64x48 --frames 1
+check "presets after one with a path exit 0" rc 0
+check "... and the next preset's legends are drawn" test -s "$work/after-path/box-over-plane/errors.png"
+
 run measure "$presets/box-over-plane.json" --out "$work/x" --size 10x10000
 check "bad size rejected" bash -c "[[ \$(cat '$work/rc') == 2 ]] && grep -qF -- '--size' '$work/stderr'"
 
