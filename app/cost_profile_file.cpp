@@ -1,17 +1,24 @@
 #include "app/cost_profile_file.h"
 
-#include "app/preset_dir.h"
 #include "metrics/cost_profile_json.h"
+
+#include <string>
 
 namespace st::app {
 namespace fs = std::filesystem;
 
 fs::path defaultCostProfileFor(const fs::path& presetDir) { return presetDir / "cost-profiles" / "llvmpipe.json"; }
 
-fs::path defaultCostProfile() { return defaultCostProfileFor(defaultPresetDir()); }
-
 metrics::CostProfile loadCostProfileOption(const fs::path& option) {
-    return metrics::loadCostProfile(option.empty() ? defaultCostProfile() : option);
+    if (!option.empty()) return metrics::loadCostProfile(option);
+    const std::string name = "built-in presets/cost-profiles/llvmpipe.json";
+    nlohmann::ordered_json root;
+    try {
+        root = nlohmann::ordered_json::parse(defaultCostProfileText());
+    } catch (const nlohmann::json::exception& e) {
+        throw metrics::CostProfileError(name, "(top level)", e.what());
+    }
+    return metrics::costProfileFromJson(root, name);
 }
 
 }  // namespace st::app

@@ -1,18 +1,22 @@
 #pragma once
 // Which cost profile a command models cost with: --profile FILE, else the shipped default for
-// Mesa llvmpipe beside the presets the binary uses (presets/cost-profiles/llvmpipe.json in a
-// source checkout, <prefix>/share/shadowtune/presets/cost-profiles/llvmpipe.json installed).
+// Mesa llvmpipe (presets/cost-profiles/llvmpipe.json), compiled into the binary so a command
+// models the same cost from any folder; the installed copy under
+// <prefix>/share/shadowtune/presets/cost-profiles/ is there to read and to pass as --profile.
 #include "metrics/cost_model.h"
 
 #include <filesystem>
+#include <string_view>
 
 namespace st::app {
 
-// <presetDir>/cost-profiles/llvmpipe.json.
+// <presetDir>/cost-profiles/llvmpipe.json: where the shipped profile's file lives.
 std::filesystem::path defaultCostProfileFor(const std::filesystem::path& presetDir);
-std::filesystem::path defaultCostProfile();  // of defaultPresetDir()
 
-// `option` when given, else defaultCostProfile(). Throws metrics::CostProfileError naming the
+// The shipped profile's JSON text, as compiled in (generated from the file at build time).
+std::string_view defaultCostProfileText();
+
+// `option` when given, else the compiled-in default. Throws metrics::CostProfileError naming the
 // file, the JSON path and the reason.
 metrics::CostProfile loadCostProfileOption(const std::filesystem::path& option);
 

@@ -1,5 +1,7 @@
 #include "app/editor_session.h"
 
+#include "app/cost_profile_file.h"
+
 #include "app/preset_list.h"
 #include "app/layout_file.h"
 #include "app/side_split_handles.h"
@@ -25,7 +27,8 @@
 namespace st::app {
 namespace fs = std::filesystem;
 
-EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt) : window_(window), opt_(opt) {
+EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt)
+    : window_(window), opt_(opt), costProfile_(loadCostProfileOption("")) {
     presetPath_ = opt.preset ? *opt.preset : opt.presetDir / "default.json";
     if (opt.preset || fs::exists(presetPath_)) settings_ = loadPreset(presetPath_);  // a bad file given by name fails
     else presetPath_.clear();
@@ -154,6 +157,15 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
 
 // A's ground truth is read back here, while the renderer holds A's maps (the live frame comes
 // next and replaces them): so the split view renders every frame, never reusing or scaling it.
+// What the settings cost at the size this frame was drawn, every map redrawn (a kept map's work
+// is its last redraw's), so the label does not drop to the main pass whenever the maps are kept.
+void EditorSession::modelCost(FrameStats& stats) const {
+    const metrics::ModelledCost m = metrics::modelFrame(costProfile_, metrics::withEveryMapRedrawn(stats));
+    stats.modelMs = m.totalMs;
+    stats.modelShadowMs = m.shadowMs;
+    stats.costProfile = metrics::profileName(costProfile_);
+}
+
 void EditorSession::renderA(const ui::UiRequests& r, int width, int height) {
     abRendered_ = false;
     if (!split_ || swapped_) return;
@@ -164,6 +176,7 @@ void EditorSession::renderA(const ui::UiRequests& r, int width, int height) {
     if (!accuracyA_) accuracyA_ = std::make_unique<EditorAccuracy>();
     try {
         abStats_ = ab_.renderA(*renderer_, a);
+        modelCost(*abStats_);
         abRendered_ = true;
     } catch (const std::exception& e) {  // A's settings on this view are rejected: say so, show live
         status_ = std::string("A: ") + e.what();
@@ -247,6 +260,7 @@ bool EditorSession::renderViews(const Settings& s, double pipScale) {
     pipSettings.output.view = valid_.output.view;
     try {
         stats_ = renderer_->render(s, orbit_);
+        modelCost(stats_);
     } catch (const std::exception& e) {  // settings the math rejects: keep the last image
         status_ = e.what();
         return false;

@@ -1,6 +1,7 @@
 #pragma once
 // One editing session: the Settings being tuned, the loaded scene and its renderer, the views
 // (main camera, side camera picture-in-picture, shadow-map tiles) and the panels.
+#include "metrics/cost_model.h"
 #include "app/ab_split_render.h"
 #include "app/editor_accuracy.h"
 #include "app/editor_app.h"
@@ -121,6 +122,9 @@ private:
     bool split_ = false;
     float divider_ = 0.5f;
     AbSplitRender ab_;
+    // Models each rendered frame's cost (FrameStats::modelMs) for the A/B labels: the shipped profile.
+    metrics::CostProfile costProfile_;
+    void modelCost(FrameStats& stats) const;
     std::optional<FrameStats> abStats_;          // A's last frame while the split is on
     bool abRendered_ = false;                    // A's settings rendered on the held frame
     std::unique_ptr<EditorAccuracy> accuracyA_;  // A's own ground-truth job

@@ -41,6 +41,8 @@ void addMeasureCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--frames", args->opt.costFrames, "Timed frames for the cost figures (after one warm-up)")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    cmd->add_option("--profile", args->opt.costProfile,
+                    "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");
     cmd->add_flag("--no-flicker", args->noFlicker, "Skip replaying the presets' camera paths");
     cmd->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
     addWarningOptions(*cmd, args->opt.warningLimits);

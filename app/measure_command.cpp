@@ -1,5 +1,7 @@
 #include "app/measure_command.h"
 
+#include "app/cost_profile_file.h"
+
 #include "app/label_strip.h"
 #include "app/legend_image.h"
 #include "app/preset_batch.h"
@@ -97,6 +99,9 @@ void printSummary(const metrics::PresetMeasurement& m, const std::string& name, 
                 k.peterPanning, percent(k.share(k.missingCaster)).c_str(), k.missingCaster, m.soft.penumbra.filteredPx,
                 m.soft.penumbra.truthPx);
     if (m.flicker) std::printf(", flicker F %s", percent(m.flicker->flipRate).c_str());
+    if (m.cost && m.cost->model)
+        std::printf(", modelled cost %.1f ms (shadow %.1f, filter %.1f, main %.1f)", m.cost->model->totalMs,
+                    m.cost->model->shadowMs, m.cost->model->filterMs, m.cost->model->mainMs);
     if (m.cost)
         std::printf(", GPU shadow %.1f ms (%.1f..%.1f) main %.1f ms (%.1f..%.1f) over %d redrawn frames",
                     m.cost->gpuShadowMs, m.cost->gpuShadowRange.minMs, m.cost->gpuShadowRange.maxMs, m.cost->gpuMainMs,
@@ -108,14 +113,15 @@ void printSummary(const metrics::PresetMeasurement& m, const std::string& name, 
 
 // The GL work of one preset (render, read back, ground truth, cost, flicker); the returned
 // writer saves the metrics and images and prints the summary.
-PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset, metrics::MeasureSession& session,
-                        const std::shared_ptr<bool>& chartDrawn) {
+PresetWriter measureOne(const MeasureCommandOptions& opt, const metrics::CostProfile& profile, const fs::path& preset,
+                        metrics::MeasureSession& session, const std::shared_ptr<bool>& chartDrawn) {
     Settings s = loadPreset(preset);
     if (opt.width) s.output.width = *opt.width;
     if (opt.height) s.output.height = *opt.height;
     const std::string name = preset.stem().string();
     metrics::MeasureOptions mo;
     mo.costFrames = opt.costFrames;
+    mo.costProfile = &profile;
     mo.flicker = opt.flicker;
     mo.warningLimits = opt.warningLimits;
     mo.progress = [&name](const std::string& line) {
@@ -133,11 +139,18 @@ PresetWriter measureOne(const MeasureCommandOptions& opt, const fs::path& preset
 }  // namespace
 
 int runMeasure(const MeasureCommandOptions& opt) {
-    return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt]() -> PresetWork {
+    std::shared_ptr<const metrics::CostProfile> profile;
+    try {
+        profile = std::make_shared<const metrics::CostProfile>(loadCostProfileOption(opt.costProfile));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+    return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt, profile]() -> PresetWork {
         auto session = std::make_shared<metrics::MeasureSession>();
         auto chartDrawn = std::make_shared<bool>(false);
-        return [&opt, session, chartDrawn](const fs::path& preset) {
-            return measureOne(opt, preset, *session, chartDrawn);
+        return [&opt, profile, session, chartDrawn](const fs::path& preset) {
+            return measureOne(opt, *profile, preset, *session, chartDrawn);
         };
     });
 }

@@ -12,6 +12,7 @@ struct MeasureCommandOptions {
     std::filesystem::path outDir = "measure";
     std::optional<int> width, height;  // override every preset's output size
     int costFrames = 5;                // timed frames for the cost figures, after a warm-up
+    std::filesystem::path costProfile; // --profile; empty: the shipped llvmpipe profile
     bool flicker = true;               // replay each preset's camera path
     metrics::MapWarningLimits warningLimits;  // when a cascade's map counts as wasted (stderr)
 #ifdef NDEBUG

@@ -58,6 +58,8 @@ void addRenderCommand(CLI::App& cli, int& exitCode) {
     render->add_option("--out", args->opt.outDir, "Output folder (created if missing)")->capture_default_str();
     render->add_option("--view", args->view, "Override the view: " + viewNames());
     render->add_option("--size", args->size, "Override the output size, WxH (e.g. 1280x720)");
+    render->add_option("--profile", args->opt.costProfile,
+                       "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");
     render->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
     render->add_option("--frames", args->opt.frames, "Time N frames of each preset (after an untimed warm-up, every map redrawn) and print median, minimum and maximum")
         ->check(CLI::Range(1, 10000));

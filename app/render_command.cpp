@@ -1,7 +1,9 @@
 #include "app/render_command.h"
 
+#include "app/cost_profile_file.h"
 #include "app/preset_batch.h"
 
+#include "metrics/cost_model.h"
 #include "metrics/measure_session.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/device.h"
@@ -91,7 +93,8 @@ FrameStats timedFrames(Renderer& r, const Settings& s, int frames, const fs::pat
 }
 
 // The GL work of one preset; the returned writer saves the image and statistics.
-PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCache<>& cache, MeasurePass& pass) {
+PresetWriter renderOne(const RenderOptions& opt, const metrics::CostProfile& profile, const fs::path& preset,
+                       SceneCache<>& cache, MeasurePass& pass) {
     Settings s = loadPreset(preset);
     if (opt.view) s.output.view = *opt.view;
     if (opt.width) s.output.width = *opt.width;
@@ -99,6 +102,10 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
     checkDeviceLimits(s, preset);
     Renderer& r = cache.rendererFor(s, preset.parent_path());
     FrameStats stats = timedFrames(r, s, opt.frames, preset);
+    const metrics::ModelledCost model = metrics::modelFrame(profile, stats.work);  // every map was redrawn
+    stats.modelMs = model.totalMs;
+    stats.modelShadowMs = model.shadowMs;
+    stats.costProfile = metrics::profileName(profile);
     Rgba8Image img{r.width(), r.height(), r.readRgba8()};
     stats.warnings = metrics::frameWarnings(r, pass, s, stats, opt.warningLimits);
     for (const std::string& w : stats.warnings) std::fprintf(stderr, "%s: warning: %s\n", preset.string().c_str(), w.c_str());
@@ -113,8 +120,10 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
             maps.clear();
             for (int size : s.cascades.mapSizes) maps += (maps.empty() ? "" : "+") + std::to_string(size) + "²";
         }
-        std::printf("wrote %s (%dx%d, view %s, %s maps (%s), %s, main %.1f ms)\n", png.string().c_str(), img.width,
-                    img.height, enumName(s.output.view).c_str(), maps.c_str(), enumName(s.cascades.storage).c_str(),
+        std::printf("wrote %s (%dx%d, view %s, %s maps (%s), modelled cost %.1f ms (shadow %.1f); measured %s, main "
+                    "%.1f ms)\n",
+                    png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(), maps.c_str(),
+                    enumName(s.cascades.storage).c_str(), stats.modelMs, stats.modelShadowMs,
                     shadowTimeText(stats).c_str(), stats.gpuMainMs);
         std::fflush(stdout);
     };
@@ -123,10 +132,19 @@ PresetWriter renderOne(const RenderOptions& opt, const fs::path& preset, SceneCa
 }  // namespace
 
 int runRender(const RenderOptions& opt) {
-    return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt]() -> PresetWork {
+    std::shared_ptr<const metrics::CostProfile> profile;
+    try {
+        profile = std::make_shared<const metrics::CostProfile>(loadCostProfileOption(opt.costProfile));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+    return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt, profile]() -> PresetWork {
         auto cache = std::make_shared<SceneCache<>>();
         auto pass = std::make_shared<MeasurePass>();
-        return [&opt, cache, pass](const fs::path& preset) { return renderOne(opt, preset, *cache, *pass); };
+        return [&opt, profile, cache, pass](const fs::path& preset) {
+            return renderOne(opt, *profile, preset, *cache, *pass);
+        };
     });
 }
 

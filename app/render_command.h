@@ -19,6 +19,7 @@ struct RenderOptions {
 #else
     bool debugContext = true;        // always on in debug builds: GL errors are bugs
 #endif
+    std::filesystem::path costProfile;  // --profile; empty: the shipped llvmpipe profile
     int frames = 1;                  // > 1: render repeatedly and report median times
     metrics::MapWarningLimits warningLimits;  // when a cascade's map counts as wasted (stderr)
 };

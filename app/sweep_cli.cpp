@@ -19,9 +19,11 @@ void addSweepCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--error", opt->error, "Error figure of the charts and the front")
         ->check(CLI::IsMember(sweep::errorChoices()))
         ->capture_default_str();
-    cmd->add_option("--cost", opt->cost, "Cost figure of the Pareto chart and the front (measured: GPU time)")
+    cmd->add_option("--cost", opt->cost, "Cost figure of the Pareto chart and the front (model: the cost model's ms, repeatable; measured: GPU timers; memory: map bytes)")
         ->check(CLI::IsMember(sweep::costChoices()))
         ->capture_default_str();
+    cmd->add_option("--profile", opt->costProfile,
+                    "Cost profile of the modelled cost (default: the shipped llvmpipe profile; `shadowtune calibrate` writes one)");
     cmd->add_option("--stop-after", opt->stopAfter, "Measure at most N new points, then stop as Ctrl-C would")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--frames", opt->costFrames, "Timed frames per point for the cost figures (after one warm-up)")

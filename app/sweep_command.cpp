@@ -1,5 +1,7 @@
 #include "app/sweep_command.h"
 
+#include "app/cost_profile_file.h"
+#include "metrics/cost_profile_json.h"
 #include "app/sweep_progress.h"
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
@@ -89,9 +91,14 @@ int runSweepCommand(const SweepCommandOptions& opt) {
         ro.stopAfter = opt.stopAfter;
         ro.costFrames = opt.costFrames;
         ro.report = report;
+        const metrics::CostProfile profile = loadCostProfileOption(opt.costProfile);
+        ro.costProfile = &profile;
         return runOnce(spec, ro, opt.debugGl);
     } catch (const SettingsError& e) {
         for (const std::string& m : e.messages()) std::fprintf(stderr, "error: %s\n", m.c_str());
+        return 1;
+    } catch (const metrics::CostProfileError& e) {  // bad input, like a bad sweep file
+        std::fprintf(stderr, "error: %s\n", e.what());
         return 1;
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "error: %s\n", e.what());

@@ -12,9 +12,10 @@ struct SweepCommandOptions {
     std::string shard;                          // "k/n", empty for the whole sweep
     std::vector<std::filesystem::path> merge;   // shard folders to join instead of running
     std::string error = "misclassified";
-    std::string cost = "measured";  // the x axis of pareto.png and the front (figure table CostChoice rows)
+    std::string cost = "model";  // the x axis of pareto.png and the front (figure table CostChoice rows)
     long stopAfter = -1;
     int costFrames = 5;
+    std::filesystem::path costProfile;  // --profile; empty: the shipped llvmpipe profile
     bool debugGl = false;
 };
 

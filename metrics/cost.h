@@ -4,9 +4,12 @@
 // in every timed frame: renderer/render/pass_work.h), shadow-map memory, caster triangles and draw calls submitted per cascade,
 // and texels: every layer's mapSize^2 is cleared and rasterised into, of which casters cover
 // `texelsCovered`.
+#include "metrics/cost_model.h"
 #include "renderer/render/frame_stats.h"
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace st::metrics {
@@ -45,6 +48,10 @@ struct CostReport {
     int draws = 0;
     std::size_t triangles = 0;  // caster triangles over all cascades
     std::vector<CascadeCost> cascades;
+    // The cost model's figure for `work` (metrics/cost_model.h): the same in every run of the same
+    // settings, unlike the timers. Absent without a profile; `profile` names the one used.
+    std::optional<ModelledCost> model;
+    std::string profile;
 };
 
 double median(std::vector<double> values);  // 0 for none; the upper median for an even count

@@ -83,6 +83,23 @@ double modelPass(const PassModel& m, const PassWork& w) {
     return ms;
 }
 
+FrameWork withEveryMapRedrawn(const FrameStats& stats) {
+    FrameWork w = stats.work;
+    w.cascades.clear();
+    w.shadow = PassWork{};
+    for (const CascadeStats& c : stats.cascades) {
+        w.cascades.push_back(c.drawnWork);
+        w.shadow += c.drawnWork;
+    }
+    return w;
+}
+
+std::string profileName(const CostProfile& p) {
+    std::string name = p.renderer.empty() ? std::string("unnamed renderer") : p.renderer;
+    if (!p.date.empty()) name += ", calibrated " + p.date.substr(0, 10);
+    return name;
+}
+
 ModelledCost modelFrame(const CostProfile& p, const FrameWork& w) {
     ModelledCost c;
     for (const PassWork& cascade : w.cascades) {

@@ -4,6 +4,7 @@
 // one machine by `shadowtune calibrate` and kept in a profile. Counted work is identical in every
 // run, so the modelled cost is too: fronts and charts stop moving with the machine's load.
 // Pure code, no GL.
+#include "renderer/render/frame_stats.h"
 #include "renderer/render/pass_work.h"
 
 #include <array>
@@ -89,6 +90,12 @@ struct ModelledCost {
 
 double modelPass(const PassModel& m, const PassWork& w);  // 0 for a pass that did no work
 ModelledCost modelFrame(const CostProfile& p, const FrameWork& w);
+// The work of a frame in which every map is redrawn: `stats.work` with each kept map's work taken
+// from its last redraw (CascadeStats::drawnWork). What the settings cost, not what this frame
+// happened to skip; the editor's labels model this.
+FrameWork withEveryMapRedrawn(const FrameStats& stats);
+// How outputs name a profile: "llvmpipe (LLVM 15.0.6, 256 bits), calibrated 2026-12-01".
+std::string profileName(const CostProfile& p);
 
 // What calibration measured for one pass of one preset.
 struct CalibrationSample {

@@ -19,6 +19,10 @@ Figure costOf(const M& m, T CostReport::*field) {
     return m.cost ? Figure(double((*m.cost).*field)) : std::nullopt;
 }
 
+Figure modelOf(const M& m, double ModelledCost::*field) {
+    return m.cost && m.cost->model ? Figure((*m.cost->model).*field) : std::nullopt;
+}
+
 // The rows, in output order. A cost row is one row: its read picks the field of CostReport (or
 // of whatever report the figure comes from) and its flags say where it goes.
 FigureTable makeTable() {
@@ -140,6 +144,24 @@ FigureTable makeTable() {
          "measured", "GPU time, shadow + filter + main (ms, median)",
          "Measured GPU time of the frame: shadow + filter + main pass medians.",
          kEverywhere | CostChoice | InEditorSweep, true},
+        {"cost.modelMs", "modelled cost", FigureUnit::Ms, Better::Lower,
+         [](const M& m) { return modelOf(m, &ModelledCost::totalMs); }, "model",
+         "modelled GPU cost, all passes (ms, cost model)",
+         "The cost model's milliseconds for the frame's counted work, all passes (docs/cost-model.md): the same in "
+         "every run of the same settings, whatever the machine's load.",
+         kEverywhere | CostChoice | InEditorSweep},
+        {"cost.model.shadowMs", "modelled shadow pass", FigureUnit::Ms, Better::Lower,
+         [](const M& m) { return modelOf(m, &ModelledCost::shadowMs); }, "", "modelled shadow pass (ms)",
+         "The cost model's milliseconds for the shadow pass (every cascade redrawn).", kEverywhere},
+        {"cost.model.filterMs", "modelled filter passes", FigureUnit::Ms, Better::Lower,
+         [](const M& m) { return modelOf(m, &ModelledCost::filterMs); }, "", "modelled filter passes (ms)",
+         "The cost model's milliseconds for the filter's extra passes.", kEverywhere},
+        {"cost.model.mainMs", "modelled main pass", FigureUnit::Ms, Better::Lower,
+         [](const M& m) { return modelOf(m, &ModelledCost::mainMs); }, "", "modelled main pass (ms)",
+         "The cost model's milliseconds for the main (shading) pass.", kEverywhere},
+        {"cost.model.depthBoundsMs", "modelled depth bounds", FigureUnit::Ms, Better::Lower,
+         [](const M& m) { return modelOf(m, &ModelledCost::depthBoundsMs); }, "", "modelled depth prepass and reduction (ms)",
+         "The cost model's milliseconds for the depth prepass and reduction (0 without depth bounds).", kEverywhere},
         {"cost.cpuMs", "CPU frame", FigureUnit::Ms, Better::Lower, [](const M& m) { return costOf(m, &CostReport::cpuMs); },
          "", "CPU time per frame (ms, median)", "CPU wall time of a frame's render call (median).",
          kEverywhere | InEditorSweep, true},

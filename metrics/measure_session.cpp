@@ -166,6 +166,10 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     if (opt.cost) {
         const auto t0 = Clock::now();
         m.cost = measureCost(*e.renderer, s, opt.costFrames);
+        if (opt.costProfile) {
+            m.cost->model = modelFrame(*opt.costProfile, m.cost->work);
+            m.cost->profile = profileName(*opt.costProfile);
+        }
         m.timings.costMs = msSince(t0);
     }
     if (opt.flicker && s.path.frames > 0) {

@@ -59,6 +59,7 @@ struct PresetMeasurement {
 struct MeasureOptions {
     bool cost = true;
     int costFrames = 5;   // timed frames, after one warm-up frame
+    const CostProfile* costProfile = nullptr;  // models the cost (CostReport::model) when set
     bool flicker = true;  // replay s.path when it has frames
     MapWarningLimits warningLimits;  // when a cascade's map counts as wasted
     std::function<void(const std::string&)> progress;  // one line per stage, if set

@@ -103,6 +103,9 @@ OJson costJson(const CostReport& c) {
         j[std::string(key) + "MaxMs"] = range.maxMs;
     }
     j["work"] = frameWorkJson(c.work);
+    // The modelled figures themselves are the table's rows (cost.modelMs, cost.model.*Ms).
+    j["profile"] = c.model ? OJson(c.profile) : OJson(nullptr);
+    if (c.model) j["model"] = OJson{{"cascadesMs", c.model->cascadesMs}};
     for (const CascadeCost& k : c.cascades) {
         j["cascades"].push_back(OJson{{"draws", k.draws}, {"casterTriangles", k.triangles}, {"gpuMs", k.gpuMs},
                                       {"texels", k.texels}, {"texelsCovered", k.texelsCovered}});

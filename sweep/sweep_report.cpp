@@ -94,6 +94,9 @@ report::ScatterChart scatter(const Manifest& m, const std::vector<PointResult>& 
     report::ScatterChart c;
     c.title = "sweep " + m.sweep + ", " + std::to_string(m.width) + "x" + std::to_string(m.height) + ": " + yShort +
               " against " + xShort;
+    // A modelled cost is only as good as its profile: the title says which.
+    if (x.key.rfind("cost.model", 0) == 0)
+        c.title += " (cost model: " + (m.costProfile.empty() ? std::string("no profile") : m.costProfile) + ")";
     c.subtitle = std::to_string(results.size()) + " points, scene " + fs::path(m.scene).filename().string() + "; " +
                  machineLine(m);
     c.xLabel = x.axisTitle;

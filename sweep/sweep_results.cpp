@@ -69,7 +69,8 @@ PointResult pointFromJson(const nlohmann::ordered_json& j, const std::string& so
     }
 }
 
-Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, const std::string& machine) {
+Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, const std::string& machine,
+                    const std::string& costProfile) {
     Manifest m;
     m.sweep = spec.name;
     m.fingerprint = fingerprintOf(spec, points);
@@ -87,6 +88,7 @@ Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, con
     }
     for (const Point& p : points) m.pointIds.push_back(p.id);
     m.machine = machine;
+    m.costProfile = costProfile;
     return m;
 }
 
@@ -96,7 +98,7 @@ nlohmann::ordered_json toJson(const Manifest& m) {
         axes.push_back({{"field", m.axisFields[a]}, {"values", m.axisValues[a]}, {"base", m.baseValues[a]}});
     return {{"version", kSweepResultsVersion}, {"sweep", m.sweep}, {"fingerprint", m.fingerprint}, {"scene", m.scene},
             {"presetDir", m.presetDir.string()}, {"width", m.width}, {"height", m.height}, {"axes", axes},
-            {"points", m.pointIds}, {"machine", m.machine}};
+            {"points", m.pointIds}, {"machine", m.machine}, {"costProfile", m.costProfile}};
 }
 
 Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& source) {
@@ -116,6 +118,7 @@ Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& so
         }
         m.pointIds = j.at("points").get<std::vector<std::string>>();
         m.machine = j.at("machine").get<std::string>();
+        m.costProfile = j.value("costProfile", "");
         return m;
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(source + ": not a sweep manifest: " + e.what());

@@ -53,9 +53,11 @@ struct Manifest {
     std::vector<std::string> baseValues;  // per axis, the value the per-axis charts hold the others at
     std::vector<std::string> pointIds;    // every point of the sweep, in order
     std::string machine;                  // renderer and cores of the machine(s) that ran it
+    std::string costProfile;              // the cost model's profile (metrics::profileName), "" without one
 };
 
-Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, const std::string& machine);
+Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, const std::string& machine,
+                    const std::string& costProfile = "");
 nlohmann::ordered_json toJson(const Manifest& m);
 // Throws std::runtime_error naming `source` for a file that is not a manifest, or one of a folder
 // written by a version of shadowtune with other figure keys.
@@ -63,10 +65,11 @@ Manifest manifestFromJson(const nlohmann::ordered_json& j, const std::string& so
 
 // The figures the charts and the front trade: an error (the table's ErrorChoice rows:
 // "misclassified", "filtered", "flicker", "soft-filtered", "acne", ...) against a cost (its
-// CostChoice rows: "measured" GPU time; the memory chart uses "memory").
+// CostChoice rows: "model", the cost model's figure, which does not move with the machine's load;
+// "measured" GPU time; the memory chart uses "memory").
 struct ReportOptions {
     std::string error = "misclassified";
-    std::string cost = "measured";
+    std::string cost = "model";
 };
 // The row of a choice; throws std::invalid_argument listing the choices for others.
 const metrics::FigureRow& errorFigure(const std::string& error, const metrics::FigureTable& table = metrics::figureTable());

@@ -41,6 +41,12 @@ void claimFolder(const fs::path& dir, const Manifest& m) {
             throw std::runtime_error(dir.string() + ": holds results of another sweep (\"" + there.sweep + "\", " +
                                      std::to_string(there.pointIds.size()) + " points, fingerprint " + there.fingerprint +
                                      "); give another --out or remove it");
+        // Modelled costs of two profiles do not compare: the front would mix them.
+        if (!there.costProfile.empty() && there.costProfile != m.costProfile)
+            throw std::runtime_error(dir.string() + ": its points were modelled with the cost profile \"" +
+                                     there.costProfile + "\", this run uses \"" +
+                                     (m.costProfile.empty() ? std::string("none") : m.costProfile) +
+                                     "\"; give another --out, or the same --profile");
     }
     writeTextAtomic(file, toJson(m).dump(2) + "\n");
 }
@@ -54,9 +60,10 @@ bool alreadyMeasured(const fs::path& file, const Point& p) {
     }
 }
 
-PointResult measurePoint(metrics::MeasureSession& session, const SweepSpec& spec, const Point& p, int costFrames) {
+PointResult measurePoint(metrics::MeasureSession& session, const SweepSpec& spec, const Point& p, const RunOptions& opt) {
     metrics::MeasureOptions mo;
-    mo.costFrames = costFrames;
+    mo.costFrames = opt.costFrames;
+    mo.costProfile = opt.costProfile;
     const metrics::PresetMeasurement m = session.measure(p.settings, spec.presetDir, mo);
     return {p.id, p.label, p.reference, p.axisValues, toOrderedJson(p.settings), figuresOf(m)};
 }
@@ -74,7 +81,7 @@ std::vector<PointResult> readPoints(const fs::path& dir, const Manifest& m) {
 RunOutcome runSweep(const SweepSpec& spec, const RunOptions& opt) {
     const std::vector<Point> all = expandPoints(spec);
     const std::vector<Point> mine = shardOf(all, opt.shardIndex, opt.shardCount);
-    const Manifest manifest = manifestOf(spec, all, opt.machine);
+    const Manifest manifest = manifestOf(spec, all, opt.machine, opt.costProfile ? metrics::profileName(*opt.costProfile) : "");
     claimFolder(opt.outDir, manifest);
     metrics::MeasureSession session;
     RunOutcome out{0, 0, mine.size(), false, {}};
@@ -88,7 +95,7 @@ RunOutcome runSweep(const SweepSpec& spec, const RunOptions& opt) {
                 out.stopped = true;
                 break;
             }
-            writeTextAtomic(file, toJson(measurePoint(session, spec, p, opt.costFrames)).dump(2) + "\n");
+            writeTextAtomic(file, toJson(measurePoint(session, spec, p, opt)).dump(2) + "\n");
             ++out.measured;
         }
         if (opt.progress) {

@@ -3,6 +3,7 @@
 // truth across points (metrics::MeasureSession), each point's result written to
 // DIR/points/<id>.json as soon as it is measured (atomically), so a stopped run keeps its work and
 // the next run resumes from it. Needs a current GL 4.5 context.
+#include "metrics/cost_model.h"
 #include "sweep/sweep_results.h"
 #include "sweep/sweep_spec.h"
 
@@ -32,6 +33,7 @@ struct RunOptions {
     std::string machine;  // for the charts' subtitles
     ReportOptions report;
     int costFrames = 5;
+    const metrics::CostProfile* costProfile = nullptr;  // models each point's cost (cost.modelMs)
 };
 
 struct RunOutcome {

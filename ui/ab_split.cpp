@@ -77,10 +77,15 @@ std::string accuracyText(const AccuracyView& a) {
 }
 
 std::string costText(const FrameStats* s) {
-    if (!s) return "GPU - ms, - MiB";
-    char text[96];
-    std::snprintf(text, sizeof text, "GPU %.1f+%.1f ms %.1f MiB", s->gpuShadowMs, s->gpuMainMs,
-                  double(s->shadowMapBytes) / (1024.0 * 1024.0));
+    if (!s) return "model - ms, - MiB";
+    // The modelled cost first: it is the same every frame; the timers beside it are not.
+    char text[128];
+    if (s->modelMs >= 0.0)
+        std::snprintf(text, sizeof text, "model %.1f ms, %.1f MiB (timers %.1f+%.1f ms)", s->modelMs,
+                      double(s->shadowMapBytes) / (1024.0 * 1024.0), s->gpuShadowMs, s->gpuMainMs);
+    else
+        std::snprintf(text, sizeof text, "GPU %.1f+%.1f ms %.1f MiB", s->gpuShadowMs, s->gpuMainMs,
+                      double(s->shadowMapBytes) / (1024.0 * 1024.0));
     return text;
 }
 

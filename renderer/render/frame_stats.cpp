@@ -38,6 +38,11 @@ std::string toJsonText(const FrameStats& s) {
     j["mainTriangles"] = s.mainTriangles;
     j["mainDraws"] = s.mainDraws;
     j["work"] = frameWorkJson(s.work);
+    if (s.modelMs >= 0.0) {
+        j["modelMs"] = s.modelMs;
+        j["modelShadowMs"] = s.modelShadowMs;
+        j["costProfile"] = s.costProfile;
+    }
     auto& arr = j["cascades"] = nlohmann::ordered_json::array();
     for (const CascadeStats& c : s.cascades) {
         nlohmann::ordered_json e;

@@ -28,6 +28,7 @@ struct CascadeStats {
     bool redrawn = true;           // this frame drew the map; false: the map from an earlier frame
     std::string mapReason;         // why it was redrawn or kept ("light matrix changed", "unchanged", ...)
     double gpuMs = 0.0;            // this cascade's depth pass
+    PassWork drawnWork;            // the work of its last redraw (this frame's, or the kept map's)
     bool samplesFitted = false;    // light box fitted to the visible samples it holds (fit "samples")
     // z-extension audit (renderer/csm/z_extension_audit.h), metres toward the sun beyond the slice:
     float zExtensionUsed = 0.0f;   // +inf with pancaking (casters clamp onto the near plane)
@@ -71,6 +72,11 @@ struct FrameStats {
     // Filled by the commands, not by Renderer::render: wasted maps and cut casters, each with
     // the likely fix (metrics/map_warnings.h).
     std::vector<std::string> warnings;
+    // Filled by the commands too: the cost model's milliseconds for `work` (metrics/cost_model.h),
+    // all passes and the shadow pass, and the profile's name; modelMs < 0 when not modelled.
+    double modelMs = -1.0;
+    double modelShadowMs = -1.0;
+    std::string costProfile;
 };
 
 std::string toJsonText(const FrameStats& s);  // pretty JSON, for the file beside each image

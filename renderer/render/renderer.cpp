@@ -117,7 +117,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     return stats;
 }
 
-void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats) const {
+void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats) {
     const CounterSlots slots{s.cascades.count};
     auto slotWork = [&](int slot) {
         PassWork w = counters_.read(slot);
@@ -125,10 +125,14 @@ void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool scre
         return w;
     };
     FrameWork& fw = stats.work;
+    if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));  // the naive path keeps none
     for (int i = 0; i < s.cascades.count; ++i) {
         // A kept map did no work this frame, whatever the (empty) queries say.
-        fw.cascades.push_back(stats.cascades[std::size_t(i)].redrawn ? slotWork(i) : PassWork{});
+        CascadeStats& c = stats.cascades[std::size_t(i)];
+        fw.cascades.push_back(c.redrawn ? slotWork(i) : PassWork{});
         fw.shadow += fw.cascades.back();
+        if (c.redrawn) held_[std::size_t(i)].drawnWork = fw.cascades.back();
+        c.drawnWork = held_[std::size_t(i)].drawnWork;
     }
     const csm::FilterTaps taps = csm::filterTapsPerFragment(s.filter, s.bias.receiverPlane);
     fw.main = slotWork(slots.main());

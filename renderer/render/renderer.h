@@ -102,7 +102,7 @@ private:
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
     // The counted work of the last render(): pipeline statistics of each slot plus the renderer's
     // own counts (pass_work.h).
-    void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats) const;
+    void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats);
     SceneGpu scene_;
     gpu::Program depthProgram_;
     gpu::Program mainProgram_;

@@ -26,6 +26,7 @@ metrics::PresetMeasurement measurement(std::size_t falseShadow, double gpuShadow
     m.cost->gpuShadowMs = gpuShadowMs;
     m.cost->shadowMapBytes = 4u << 20;
     m.cost->triangles = 1200;
+    m.cost->model = metrics::ModelledCost{{gpuShadowMs}, gpuShadowMs, 2.0, 0.0, 0.0, gpuShadowMs + 2.0};
     return m;
 }
 

@@ -49,10 +49,11 @@ TEST(EditorSweepChartTest, PointShowsTheTablesChoicesInTheirUnits) {
     m.cost = metrics::CostReport{};
     m.cost->gpuShadowMs = 2.0, m.cost->gpuMainMs = 3.0, m.cost->gpuFilterMs = 0.5;
     m.cost->shadowMapBytes = 8u << 20, m.cost->filterMapBytes = 2u << 20;
+    m.cost->model = metrics::ModelledCost{{4.0}, 4.0, 3.25, 0.0, 0.0, 7.25};
     sweep::PointResult r{"1", "count=1", false, {"1"}, toOrderedJson(Settings{}), sweep::figuresOf(m)};
     const ui::SweepPoint p = chartPoint(r, {"cascades.count"});
     EXPECT_DOUBLE_EQ(p.error, 1.5);
-    EXPECT_DOUBLE_EQ(p.cost, 5.5);
+    EXPECT_DOUBLE_EQ(p.cost, 7.25) << "the chart's cost is the modelled one";
     EXPECT_DOUBLE_EQ(p.memory, 10.0);
     for (const metrics::FigureRow* row : metrics::figuresShown(metrics::InEditorSweep))
         EXPECT_NE(p.figures.find(row->label + " " + metrics::formatValue(row->unit, row->read(m))), std::string::npos)

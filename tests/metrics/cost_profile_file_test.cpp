@@ -34,3 +34,14 @@ TEST(CostProfileFileTest, ProfileOptionErrorsNameTheFile) {
 
 }  // namespace
 }  // namespace st::app
+
+namespace st::app {
+namespace {
+
+// The compiled-in default is the shipped file, whatever folder a command runs from.
+TEST(CostProfileFileTest, EmptyOptionIsTheCompiledInShippedProfile) {
+    EXPECT_EQ(loadCostProfileOption(""), loadCostProfileOption(defaultCostProfileFor(ST_PRESET_DIR)));
+}
+
+}  // namespace
+}  // namespace st::app

@@ -38,6 +38,8 @@ metrics::PresetMeasurement known() {
     m.cost->gpuShadowMs = 1.5, m.cost->gpuFilterMs = 0.25, m.cost->gpuMainMs = 2.0, m.cost->cpuMs = 0.5;
     m.cost->shadowMapBytes = 16u << 20, m.cost->filterMapBytes = 4u << 20;
     m.cost->triangles = 1200, m.cost->draws = 7, m.cost->sceneTriangles = 5000;
+    m.cost->model = metrics::ModelledCost{{2.0, 1.0}, 3.0, 4.5, 0.5, 0.0, 8.0};
+    m.cost->profile = "test profile";
     return m;  // no camera path: no flicker
 }
 
@@ -72,6 +74,12 @@ TEST(FigureTableTest, KnownCountsReadBackAsTheirShares) {
     EXPECT_EQ(*read(m, "cost.gpuMs"), 3.75);
     EXPECT_EQ(*read(m, "cost.mapBytes"), double(20u << 20));
     EXPECT_EQ(*read(m, "cost.draws"), 7.0);
+    EXPECT_EQ(*read(m, "cost.modelMs"), 8.0);
+    EXPECT_EQ(*read(m, "cost.model.shadowMs"), 3.0);
+    EXPECT_EQ(*read(m, "cost.model.mainMs"), 4.5);
+    metrics::PresetMeasurement unmodelled = m;
+    unmodelled.cost->model.reset();
+    EXPECT_FALSE(read(unmodelled, "cost.modelMs")) << "no profile, no modelled cost";
     metrics::PresetMeasurement uncosted = m;
     uncosted.cost.reset();
     for (const FigureRow& r : metrics::figureTable())
@@ -116,6 +124,8 @@ TEST(FigureTableTest, RowsAreCompleteAndNamesUnique) {
         EXPECT_TRUE(errors.count(name)) << name;
     EXPECT_EQ(sweep::errorKey("penumbra-width"), "soft.penumbraWidth.absErrorPx");
     EXPECT_EQ(sweep::costFigure("measured").key, "cost.gpuMs");
+    EXPECT_EQ(sweep::costFigure("model").key, "cost.modelMs");
+    EXPECT_EQ(sweep::costFigure(sweep::ReportOptions{}.cost).key, "cost.modelMs") << "fronts rank the modelled cost";
     EXPECT_EQ(sweep::costFigure(sweep::kMemoryChoice).key, "cost.mapBytes");
     EXPECT_THROW(sweep::errorKey("sharpness"), std::invalid_argument);
     EXPECT_THROW(sweep::costFigure("misclassified"), std::invalid_argument) << "an error is no cost";
@@ -196,6 +206,8 @@ std::vector<sweep::PointResult> pointsOf(const FigureTable& table) {
         auto m = known();
         m.accuracy.all.falseLightGross = std::size_t(10 * i);
         m.cost->gpuMainMs = 10.0 - i;  // the better, the cheaper: all three are on the front
+        m.cost->model->mainMs = 10.0 - i;
+        m.cost->model->totalMs = 3.0 + 0.5 + m.cost->model->mainMs;
         points.push_back({std::to_string(i), "p" + std::to_string(i), false, {std::to_string(i)}, toOrderedJson(s),
                           sweep::figuresOf(m, table)});
     }
@@ -216,7 +228,7 @@ TEST(FigureTableTest, SweepResultsListEveryRowInTableOrderWithRawValues) {
     EXPECT_TRUE(results["points"][0]["figures"]["flicker.flipRate"].is_null());
     const OJson front = OJson::parse(readText(dir.path() / "front.json"));
     ASSERT_EQ(front.size(), 3u);
-    EXPECT_EQ(front[0]["cost.gpuMs"], 1.5 + 0.25 + 9.0);
+    EXPECT_EQ(front[0]["cost.modelMs"], 3.0 + 0.5 + 9.0) << "the front's cost is the modelled one by default";
 }
 
 TEST(FigureTableTest, DocsListEveryRow) {

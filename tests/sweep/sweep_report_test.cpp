@@ -18,7 +18,7 @@ PointResult point(const std::string& id, double gpuMs, double error, bool refere
     s.scene = scene;
     return {id, "p" + id, reference, {reference ? "" : id}, toOrderedJson(s),
             {{"accuracy.misclassified", error}, {"accuracy.filteredError", error / 10}, {"cost.gpuMs", gpuMs},
-             {"cost.mapBytes", 16.0 * (1 << 20)}}};
+             {"cost.modelMs", gpuMs}, {"cost.mapBytes", 16.0 * (1 << 20)}}};
 }
 
 Manifest manifest(const std::vector<PointResult>& points, const std::filesystem::path& presetDir) {
@@ -63,7 +63,7 @@ TEST(SweepReportTest, FrontHoldsThePointsNoOtherDominates) {
         row5 += ",";
         if (std::isfinite(v)) row5 += std::map<std::string, std::string>{
             {"accuracy.misclassified", "1"}, {"accuracy.filteredError", "0.1"}, {"cost.gpuMs", "40"},
-            {"cost.mapBytes", "16777216"}}.at(r->key);  // bytes as a whole number
+            {"cost.modelMs", "40"}, {"cost.mapBytes", "16777216"}}.at(r->key);  // bytes as a whole number
     }
     EXPECT_NE(csv.find(row5 + "\n"), std::string::npos) << row5 << "\n" << csv;
     for (const char* f : {"pareto.png", "pareto.svg", "pareto-memory.png", "results.json", "front.json"})

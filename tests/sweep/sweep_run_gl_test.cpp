@@ -1,5 +1,6 @@
 // One-process sweeps on the box over a plane: a resumed run and a sharded, merged run give
 // exactly the figures of one uninterrupted run, and those are measure's own figures.
+#include "metrics/cost_profile_json.h"
 #include "metrics/measure_session.h"
 #include "renderer/context/egl_context.h"
 #include "sweep/sweep_run.h"
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 using namespace st;
 using namespace st::sweep;
@@ -30,7 +32,13 @@ protected:
         RunOptions o;
         o.outDir = dir.path() / out;
         o.costFrames = 1;
+        o.costProfile = &profile();
         return o;
+    }
+    static const metrics::CostProfile& profile() {  // the shipped one, as `shadowtune sweep` uses by default
+        static const metrics::CostProfile p =
+            metrics::loadCostProfile(std::filesystem::path(ST_SOURCE_DIR) / "presets/cost-profiles/llvmpipe.json");
+        return p;
     }
     // Every figure but the timings, which no two runs share.
     static std::map<std::string, Figures> deterministic(const std::vector<PointResult>& results) {
@@ -112,4 +120,82 @@ TEST_F(SweepRunGLTest, AFolderOfAnotherSweepIsRefused) {
     SweepSpec other = s;
     other.axes.pop_back();
     EXPECT_THROW(runSweep(other, options("one")), std::runtime_error);
+}
+
+namespace {
+std::vector<std::string> csvCells(const std::string& line) {  // quoted cells may hold commas
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) cells.emplace_back();
+        else cells.back() += c;
+    }
+    return cells;
+}
+
+// results.csv without the measured-time columns (the table's timing rows).
+std::string withoutTimings(const std::filesystem::path& csv) {
+    std::ifstream in(csv);
+    std::string line, out;
+    std::vector<bool> keep;
+    while (std::getline(in, line)) {
+        const std::vector<std::string> cells = csvCells(line);
+        if (keep.empty())
+            for (const std::string& key : cells) {
+                const metrics::FigureRow* row = metrics::findFigure(key);
+                keep.push_back(!(row && row->timing));
+            }
+        for (std::size_t i = 0; i < cells.size(); ++i)
+            if (i >= keep.size() || keep[i]) out += cells[i] + ",";
+        out += "\n";
+    }
+    return out;
+}
+
+std::string text(const std::filesystem::path& f) {
+    std::ifstream in(f);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+// The issue's promise: the cost axis does not move with the machine's load. Two runs of one sweep
+// give the same results.csv but for the measured times, and the same front, ranked by the
+// modelled cost of the counted work.
+TEST_F(SweepRunGLTest, TwoRunsGiveTheSameResultsButTimingsAndTheSameFront) {
+    const SweepSpec s = spec();
+    const RunOutcome one = runSweep(s, options("one"));
+    const RunOutcome two = runSweep(s, options("two"));
+    EXPECT_EQ(one.front, two.front);
+    EXPECT_FALSE(one.front.empty());
+    const std::string a = withoutTimings(dir.path() / "one" / "results.csv");
+    EXPECT_EQ(a, withoutTimings(dir.path() / "two" / "results.csv"));
+    EXPECT_NE(a.find("cost.modelMs"), std::string::npos) << a;
+    EXPECT_EQ(a.find("cost.gpuMs"), std::string::npos) << "a measured time was kept: " << a;
+    EXPECT_EQ(text(dir.path() / "one" / "front.json"), text(dir.path() / "two" / "front.json"));
+    for (const auto& [id, figures] : resultsIn("one"))
+        for (const auto& [k, v] : figures)
+            if (k == "cost.modelMs") EXPECT_GT(v, 0.0) << id << ": every point is modelled";
+    const auto manifest = manifestFromJson(nlohmann::ordered_json::parse(text(dir.path() / "one" / "sweep.json")), "one");
+    EXPECT_EQ(manifest.costProfile, metrics::profileName(profile()));
+}
+
+// Modelled costs of two profiles do not compare: resuming under another profile is refused.
+TEST_F(SweepRunGLTest, ResumingUnderAnotherCostProfileIsRefused) {
+    const SweepSpec s = spec();
+    RunOptions first = options("one");
+    first.stopAfter = 1;
+    runSweep(s, first);
+    metrics::CostProfile other = profile();
+    other.renderer = "another renderer";
+    RunOptions second = options("one");
+    second.costProfile = &other;
+    try {
+        runSweep(s, second);
+        FAIL() << "resumed under another profile";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("another renderer"), std::string::npos) << e.what();
+    }
 }
