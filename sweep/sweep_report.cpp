@@ -88,15 +88,22 @@ double shownFigure(const PointResult& r, const metrics::FigureRow& row) {
     return metrics::shown(row.unit, r.figure(row.key));
 }
 
+std::string profileTitle(const std::string& profile) {
+    if (profile.empty()) return "no cost profile";
+    const std::string renderer = profile.substr(0, profile.find_first_of(" ,("));
+    const std::size_t at = profile.find("calibrated ");
+    return renderer + " profile" + (at == std::string::npos ? "" : " " + profile.substr(at + 11));
+}
+
 report::ScatterChart scatter(const Manifest& m, const std::vector<PointResult>& results, const metrics::FigureRow& x,
                              const metrics::FigureRow& y) {
     const std::string xShort = shortName(x), yShort = shortName(y);
     report::ScatterChart c;
-    c.title = "sweep " + m.sweep + ", " + std::to_string(m.width) + "x" + std::to_string(m.height) + ": " + yShort +
+    c.title = m.sweep + ", " + std::to_string(m.width) + "x" + std::to_string(m.height) + ": " + yShort +
               " against " + xShort;
-    // A modelled cost is only as good as its profile: the title says which.
-    if (x.key.rfind("cost.model", 0) == 0)
-        c.title += " (cost model: " + (m.costProfile.empty() ? std::string("no profile") : m.costProfile) + ")";
+    // A modelled cost is only as good as its profile: the title says which, short enough to fit
+    // ("llvmpipe profile 2026-12-01"); results.json's manifest has the full name.
+    if (x.key.rfind("cost.model", 0) == 0) c.title += " (" + profileTitle(m.costProfile) + ")";
     c.subtitle = std::to_string(results.size()) + " points, scene " + fs::path(m.scene).filename().string() + "; " +
                  machineLine(m);
     c.xLabel = x.axisTitle;
