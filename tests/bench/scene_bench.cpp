@@ -7,6 +7,8 @@
 //   moving  culled + cached maps, camera moving 0.1 m per frame along its view
 // Under each row, the main pass alone (wall time between glFinish calls: llvmpipe's timestamps
 // bracket only part of a pass) and its counted work; --no-cached-rows runs naive and culled only.
+#include "metrics/cost_model.h"
+#include "metrics/cost_profile_json.h"
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/gl.h"
 #include "renderer/render/renderer.h"
@@ -71,13 +73,22 @@ struct Figures {
     double shadowMs = 0, mainMs = 0, frameMs = 0;
     double triangles = 0, lowerBound = 0, draws = 0, mainTriangles = 0, redrawn = 0, mainDraws = 0, mainRanges = 0;
     MainWork main;
+    double modelMs = 0;  // the shipped cost model's ms for the frames' counted work (median)
 };
+
+// The shipped llvmpipe profile (presets/cost-profiles/llvmpipe.json): the modelled cost beside
+// the timers, which on a CPU move with the load.
+const metrics::CostProfile& profile() {
+    static const metrics::CostProfile p =
+        metrics::loadCostProfile(std::filesystem::path(ST_SOURCE_DIR) / "presets/cost-profiles/llvmpipe.json");
+    return p;
+}
 
 Figures run(Renderer& r, Settings s, RenderOptions o, int frames, bool moving, OffscreenTarget& target) {
     r.setOptions(o);
     r.invalidateMaps();
     r.render(s);  // warm-up
-    std::vector<double> shadow, main, frame, tris, bound, draws, mainTris, redrawn, mainDraws, mainRanges;
+    std::vector<double> shadow, main, frame, tris, bound, draws, mainTris, redrawn, mainDraws, mainRanges, model;
     const glm::vec3 step = 0.1f * glm::normalize(s.camera.target - s.camera.position);
     for (int f = 0; f < frames; ++f) {
         if (moving) s.camera.position += step, s.camera.target += step;
@@ -97,17 +108,19 @@ Figures run(Renderer& r, Settings s, RenderOptions o, int frames, bool moving, O
         mainTris.push_back(double(st.mainTriangles));
         mainDraws.push_back(double(st.mainDraws));
         mainRanges.push_back(double(st.mainRanges));
+        model.push_back(metrics::modelFrame(profile(), st.work).totalMs);
     }
     Figures f{median(shadow), median(main), median(frame), median(tris), median(bound), median(draws), median(mainTris),
               median(redrawn), median(mainDraws), median(mainRanges), {}};
     f.main = mainWork(r, s, target);
+    f.modelMs = median(model);
     return f;
 }
 
 void print(const char* name, const Figures& f) {
     std::printf("  %-7s shadow %8.2f ms  main %7.2f ms  frame %8.2f ms  caster triangles %9.0f  draws %6.0f  "
-                "maps redrawn %.0f  main triangles %9.0f\n",
-                name, f.shadowMs, f.mainMs, f.frameMs, f.triangles, f.draws, f.redrawn, f.mainTriangles);
+                "maps redrawn %.0f  main triangles %9.0f  modelled frame %8.2f ms\n",
+                name, f.shadowMs, f.mainMs, f.frameMs, f.triangles, f.draws, f.redrawn, f.mainTriangles, f.modelMs);
     std::printf("          main pass alone %.2f ms (wall)  work: draws %.0f (commands %.0f)  vertices %llu  VS invocations %llu  primitives %llu  "
                 "clipped %llu  fragments %llu  passed depth %llu\n",
                 f.main.wallMs, f.mainDraws, f.mainRanges, (unsigned long long)f.main.vertices, (unsigned long long)f.main.vsInvocations,
