@@ -31,6 +31,7 @@ const char* featureName(Feature f) {
         case Feature::Primitives: return "primitives";
         case Feature::ClippedPrimitives: return "clippedPrimitives";
         case Feature::Fragments: return "fragments";
+        case Feature::SamplesPassed: return "samplesPassed";
         case Feature::ComputeInvocations: return "computeInvocations";
         case Feature::TexelsCleared: return "texelsCleared";
         case Feature::FilterTaps: return "filterTaps";
@@ -56,6 +57,7 @@ double featureValue(const PassWork& w, Feature f) {
         case Feature::Primitives: return double(w.primitives);
         case Feature::ClippedPrimitives: return double(w.clippedPrimitives);
         case Feature::Fragments: return double(w.fragments);
+        case Feature::SamplesPassed: return double(w.samplesPassed);
         case Feature::ComputeInvocations: return double(w.computeInvocations);
         case Feature::TexelsCleared: return double(w.texelsCleared);
         case Feature::FilterTaps: return double(w.filterTaps);

@@ -26,12 +26,12 @@ std::optional<PassKind> passKindFromName(std::string_view name);
 // A model term: PassWork's counters, and Intercept, 1 for a pass that did any work (a kept map,
 // or a filter that does not run, costs nothing).
 enum class Feature {
-    Intercept, Draws, Vertices, Primitives, ClippedPrimitives, Fragments, ComputeInvocations, TexelsCleared,
-    FilterTaps, BytesRead, BytesWritten
+    Intercept, Draws, Vertices, Primitives, ClippedPrimitives, Fragments, SamplesPassed, ComputeInvocations,
+    TexelsCleared, FilterTaps, BytesRead, BytesWritten
 };
-inline constexpr std::array<Feature, 11> kFeatures{
+inline constexpr std::array<Feature, 12> kFeatures{
     Feature::Intercept, Feature::Draws, Feature::Vertices, Feature::Primitives, Feature::ClippedPrimitives,
-    Feature::Fragments, Feature::ComputeInvocations, Feature::TexelsCleared, Feature::FilterTaps,
+    Feature::Fragments, Feature::SamplesPassed, Feature::ComputeInvocations, Feature::TexelsCleared, Feature::FilterTaps,
     Feature::BytesRead, Feature::BytesWritten};
 const char* featureName(Feature f);  // PassWork's member names; "intercept"
 std::optional<Feature> featureFromName(std::string_view name);

@@ -4,7 +4,7 @@ namespace st {
 namespace {
 constexpr std::array<GLenum, PassCounters::kTargets> kTargetsOf = {
     GL_VERTICES_SUBMITTED_ARB, GL_PRIMITIVES_SUBMITTED_ARB, GL_CLIPPING_OUTPUT_PRIMITIVES_ARB,
-    GL_FRAGMENT_SHADER_INVOCATIONS_ARB, GL_COMPUTE_SHADER_INVOCATIONS_ARB};
+    GL_FRAGMENT_SHADER_INVOCATIONS_ARB, GL_COMPUTE_SHADER_INVOCATIONS_ARB, GL_SAMPLES_PASSED};
 }  // namespace
 
 PassCounters::PassCounters()
@@ -44,6 +44,7 @@ PassWork PassCounters::read(int slot) const {
     w.clippedPrimitives = v[2];
     w.fragments = v[3];
     w.computeInvocations = v[4];
+    w.samplesPassed = v[5];
     return w;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // GL pipeline statistics of named passes (ARB_pipeline_statistics_query): vertices and primitives
-// submitted, primitives out of clipping, fragment-shader and compute-shader invocations. Counts,
-// not times: the same frame gives the same figures however busy the machine is. Like GpuTimers,
-// one slot per pass; only one query of each target may be active at a time, so slots are begun
+// submitted, primitives out of clipping, fragment-shader and compute-shader invocations, and
+// an occlusion query (GL_SAMPLES_PASSED, active alongside them) for the samples that passed the
+// depth test. Counts, not times: the same frame gives the same figures however busy the machine
+// is. Like GpuTimers, one slot per pass; only one query of each target may be active at a time, so slots are begun
 // and ended around passes that do not nest. Without the extension every figure stays 0.
 #include "renderer/gpu/gl.h"
 #include "renderer/render/pass_work.h"
@@ -14,7 +15,7 @@ namespace st {
 
 class PassCounters {
 public:
-    static constexpr int kTargets = 5;
+    static constexpr int kTargets = 6;
     PassCounters();  // needs a current GL context: checks the extension
 
     bool supported() const { return supported_; }
@@ -22,7 +23,7 @@ public:
     void begin(int slot);
     void end(int slot);
     // The statistics of the slot's last begin/end this frame (waits for them); all 0 for a slot
-    // not run this frame. Only the pipeline-statistics fields of PassWork are set.
+    // not run this frame. Only the query fields of PassWork are set.
     PassWork read(int slot) const;
 
 private:

@@ -1,7 +1,9 @@
 #pragma once
 // The work one pass did, counted rather than timed, so it is identical in every run of the same
 // settings whatever else the machine is doing: GL pipeline statistics queries
-// (ARB_pipeline_statistics_query) and the renderer's own counts. The cost model
+// (ARB_pipeline_statistics_query), an occlusion query and the renderer's own counts. llvmpipe
+// counts fragment-shader invocations before the depth test, the same in any draw order; the
+// samples that passed it show overdraw (what llvmpipe actually shades). The cost model
 // (metrics/cost_model.h) turns these into modelled milliseconds. Plain data, no GL.
 #include <cstdint>
 #include <vector>
@@ -14,6 +16,7 @@ struct PassWork {
     std::uint64_t primitives = 0;          // GL_PRIMITIVES_SUBMITTED_ARB
     std::uint64_t clippedPrimitives = 0;   // GL_CLIPPING_OUTPUT_PRIMITIVES_ARB: what reached the rasteriser
     std::uint64_t fragments = 0;           // GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+    std::uint64_t samplesPassed = 0;       // GL_SAMPLES_PASSED: fragments that passed the depth test (what llvmpipe shades)
     std::uint64_t computeInvocations = 0;  // GL_COMPUTE_SHADER_INVOCATIONS_ARB
     std::uint64_t texelsCleared = 0;       // render-target texels cleared (maps and targets)
     std::uint64_t filterTaps = 0;          // shadow-map samples the pass's shading took (taps per shaded fragment x fragments)
@@ -22,7 +25,7 @@ struct PassWork {
 
     PassWork& operator+=(const PassWork& o) {
         draws += o.draws, vertices += o.vertices, primitives += o.primitives;
-        clippedPrimitives += o.clippedPrimitives, fragments += o.fragments;
+        clippedPrimitives += o.clippedPrimitives, fragments += o.fragments, samplesPassed += o.samplesPassed;
         computeInvocations += o.computeInvocations, texelsCleared += o.texelsCleared;
         filterTaps += o.filterTaps, bytesRead += o.bytesRead, bytesWritten += o.bytesWritten;
         return *this;

@@ -8,6 +8,7 @@ nlohmann::ordered_json passWorkJson(const PassWork& w) {
             {"primitives", w.primitives},
             {"clippedPrimitives", w.clippedPrimitives},
             {"fragments", w.fragments},
+            {"samplesPassed", w.samplesPassed},
             {"computeInvocations", w.computeInvocations},
             {"texelsCleared", w.texelsCleared},
             {"filterTaps", w.filterTaps},

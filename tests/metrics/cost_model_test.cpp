@@ -125,6 +125,33 @@ TEST(CostModelTest, ModelFrameByHand) {
     EXPECT_NEAR(c.totalMs, 2.3 + 7.3, 1e-12);
 }
 
+TEST(CostModelTest, EveryFeatureHasItsNameAndItsCounter) {
+    for (Feature f : kFeatures) EXPECT_EQ(featureFromName(featureName(f)), f) << featureName(f);
+    EXPECT_EQ(featureFromName("samplesPassed"), Feature::SamplesPassed);
+    PassWork w;
+    w.fragments = 5000;
+    w.samplesPassed = 1234;
+    EXPECT_EQ(featureValue(w, Feature::SamplesPassed), 1234.0);
+    EXPECT_EQ(featureValue(w, Feature::Fragments), 5000.0);
+}
+
+// A profile written before samplesPassed was counted has no term for it: it loads and models
+// the work it knows, whatever samplesPassed says; a profile with the term prices it.
+TEST(CostModelTest, SamplesPassedIsPricedOnlyByProfilesThatHaveIt) {
+    PassWork m = work(3000, 2'000'000);
+    const double without = modelFrame(knownProfile(), FrameWork{.main = m}).mainMs;
+    m.samplesPassed = 500'000;
+    EXPECT_EQ(modelFrame(knownProfile(), FrameWork{.main = m}).mainMs, without);
+    CostProfile p = knownProfile();
+    p.pass(PassKind::Main).terms.push_back({Feature::SamplesPassed, 2e-6});
+    EXPECT_NEAR(modelFrame(p, FrameWork{.main = m}).mainMs, without + 1.0, 1e-12);
+    nlohmann::ordered_json j = toJson(p);
+    EXPECT_EQ(j["passes"]["main"]["coefficients"]["samplesPassed"], 2e-6);
+    EXPECT_EQ(costProfileFromJson(j, "mem"), p);
+    j["passes"]["main"]["coefficients"].erase("samplesPassed");
+    EXPECT_EQ(costProfileFromJson(j, "mem"), knownProfile());
+}
+
 TEST(CostModelTest, FitRecoversCoefficientsOfExactSamples) {
     const CostProfile truth = knownProfile();
     std::vector<CalibrationSample> samples;

@@ -39,6 +39,31 @@ FrameStats redrawn(Renderer& r, const Settings& s) {
     r.invalidateMaps();
     return r.render(s);
 }
+
+// Square sheets of 2 x 2 m facing +z, one every 4 m along -z, one draw each in this order;
+// double-sided, so from either end of the stack every sheet is drawn and the nearest hides the rest.
+Scene sheetStack(int sheets) {
+    Scene s;
+    s.materials.push_back(Material{.baseColor = {0.9f, 0.3f, 0.2f, 1.0f}, .doubleSided = true});
+    for (int k = 0; k < sheets; ++k) {
+        const float z = -4.0f * float(k);
+        const auto base = std::uint32_t(s.vertices.size());
+        for (float y : {-1.0f, 1.0f})
+            for (float x : {-1.0f, 1.0f}) s.vertices.push_back({{x, y, z}, {0, 0, 1}, {}});
+        s.draws.push_back(DrawItem{.firstIndex = std::uint32_t(s.indices.size()), .indexCount = 6, .material = 0});
+        s.indices.insert(s.indices.end(), {base, base + 1, base + 3, base, base + 3, base + 2});
+    }
+    finalizeBounds(s);
+    return s;
+}
+
+// Pixels of the image other than the colour of its top-left corner (the sky there).
+std::uint64_t coveredPixels(const std::vector<std::uint8_t>& px) {
+    std::uint64_t covered = 0;
+    for (std::size_t i = 0; i + 3 < px.size(); i += 4)
+        covered += px[i] != px[0] || px[i + 1] != px[1] || px[i + 2] != px[2];
+    return covered;
+}
 }  // namespace
 
 TEST_F(PassWorkGLTest, TheContextCountsPipelineStatistics) {
@@ -57,6 +82,12 @@ TEST_F(PassWorkGLTest, TheSameSettingsTwiceGiveTheSameWork) {
     EXPECT_EQ(a.work, b.work);
     EXPECT_GT(a.work.main.fragments, 0u);
     EXPECT_GT(a.work.shadow.fragments, 0u);
+    EXPECT_GT(a.work.main.samplesPassed, 0u);
+    EXPECT_GT(a.work.shadow.samplesPassed, 0u);
+    EXPECT_EQ(a.work.main.samplesPassed, b.work.main.samplesPassed);
+    // Samples that passed the depth test were shaded; llvmpipe counts invocations before it.
+    EXPECT_LE(a.work.main.samplesPassed, a.work.main.fragments);
+    EXPECT_LE(a.work.shadow.samplesPassed, a.work.shadow.fragments);
     EXPECT_EQ(a.work.cascades.size(), std::size_t(s.cascades.count));
 }
 
@@ -68,6 +99,9 @@ TEST_F(PassWorkGLTest, TheGroundFillingTheViewShadesEachPixelOnce) {
     const PassWork& m = f.work.main;
     ASSERT_EQ(f.mainTriangles, 2u) << "only the ground is in view";
     expectCovers(m.fragments, u64(160 * 90), "main pass");
+    // One layer, nothing in front: exactly one sample per pixel passes, where invocations count
+    // llvmpipe's 4x4 blocks.
+    EXPECT_EQ(m.samplesPassed, u64(160 * 90));
     EXPECT_EQ(m.primitives, 2u);
     EXPECT_EQ(m.clippedPrimitives, 2u);
     EXPECT_EQ(m.vertices, 6u);
@@ -172,4 +206,40 @@ TEST_F(PassWorkGLTest, TheScreenSpacePathFiltersInItsMaskAndTheMainPassReadsOneF
     expectCovers(f.work.filter.filterTaps - blurTaps, full, "mask taps");
     EXPECT_EQ(f.work.main.filterTaps, f.work.main.fragments);
     EXPECT_EQ(f.work.main.bytesRead, f.work.main.fragments * 4u);  // one R32F factor
+}
+
+// llvmpipe counts fragment-shader invocations before the depth test, so they are the same in
+// any draw order; the samples that passed it are not. The naive path draws the stack in scene
+// order: front to back from its +z end, where only the nearest sheet's pixels pass, and back to
+// front from the other end, where every sheet passes where it is drawn.
+TEST_F(PassWorkGLTest, SamplesPassedShowOverdrawThatFragmentsDoNot) {
+    constexpr int sheets = 4;
+    Scene scene = sheetStack(sheets);
+    Renderer r(scene);
+    r.setOptions(RenderOptions{.naive = true});
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.nearPlane = 0.3f;
+    s.camera.farPlane = 60.0f;
+    const float back = -4.0f * (sheets - 1);
+    PassWork frontToBack, backToFront;
+    std::uint64_t coveredFront = 0, coveredBack = 0;
+    for (bool fromFront : {true, false}) {
+        s.camera.position = {0.0f, 0.0f, fromFront ? 6.0f : back - 6.0f};
+        s.camera.target = {0.0f, 0.0f, fromFront ? -1.0f : back + 1.0f};
+        const PassWork w = r.render(s).work.main;
+        (fromFront ? frontToBack : backToFront) = w;
+        (fromFront ? coveredFront : coveredBack) = coveredPixels(r.readRgba8());
+    }
+    ASSERT_GT(coveredFront, 0u);
+    EXPECT_EQ(frontToBack.samplesPassed, coveredFront);
+    // Mirror-image views: the same coverage, within a row of pixels for the mirrored rasterisation.
+    EXPECT_NEAR(double(coveredBack), double(coveredFront), 160.0);
+    EXPECT_NEAR(double(backToFront.fragments), double(frontToBack.fragments), 0.01 * double(frontToBack.fragments));
+    // Back to front every sheet passes where it is drawn: sheets 6, 10, 14 and 18 m away cover
+    // 1 + (6/10)^2 + (6/14)^2 + (6/18)^2 = 1.65 times the nearest one's pixels.
+    EXPECT_GE(backToFront.samplesPassed, coveredBack + coveredBack / 2);
+    EXPECT_LE(backToFront.samplesPassed, backToFront.fragments);
+    EXPECT_GT(backToFront.samplesPassed, frontToBack.samplesPassed);
 }
