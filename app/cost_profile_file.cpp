@@ -2,6 +2,7 @@
 
 #include "metrics/cost_profile_json.h"
 
+#include <cstdio>
 #include <string>
 
 namespace st::app {
@@ -19,6 +20,15 @@ metrics::CostProfile loadCostProfileOption(const fs::path& option) {
         throw metrics::CostProfileError(name, "(top level)", e.what());
     }
     return metrics::costProfileFromJson(root, name);
+}
+
+std::shared_ptr<const metrics::CostProfile> loadCostProfileOrReport(const fs::path& option) {
+    try {
+        return std::make_shared<const metrics::CostProfile>(loadCostProfileOption(option));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return nullptr;
+    }
 }
 
 }  // namespace st::app

@@ -6,6 +6,7 @@
 #include "metrics/cost_model.h"
 
 #include <filesystem>
+#include <memory>
 #include <string_view>
 
 namespace st::app {
@@ -19,5 +20,7 @@ std::string_view defaultCostProfileText();
 // `option` when given, else the compiled-in default. Throws metrics::CostProfileError naming the
 // file, the JSON path and the reason.
 metrics::CostProfile loadCostProfileOption(const std::filesystem::path& option);
+// The same for a command's start: null after printing "error: ..." on stderr (exit 1: bad input).
+std::shared_ptr<const metrics::CostProfile> loadCostProfileOrReport(const std::filesystem::path& option);
 
 }  // namespace st::app

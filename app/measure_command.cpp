@@ -139,13 +139,8 @@ PresetWriter measureOne(const MeasureCommandOptions& opt, const metrics::CostPro
 }  // namespace
 
 int runMeasure(const MeasureCommandOptions& opt) {
-    std::shared_ptr<const metrics::CostProfile> profile;
-    try {
-        profile = std::make_shared<const metrics::CostProfile>(loadCostProfileOption(opt.costProfile));
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 1;
-    }
+    const auto profile = loadCostProfileOrReport(opt.costProfile);
+    if (!profile) return 1;
     return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt, profile]() -> PresetWork {
         auto session = std::make_shared<metrics::MeasureSession>();
         auto chartDrawn = std::make_shared<bool>(false);

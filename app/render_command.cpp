@@ -132,13 +132,8 @@ PresetWriter renderOne(const RenderOptions& opt, const metrics::CostProfile& pro
 }  // namespace
 
 int runRender(const RenderOptions& opt) {
-    std::shared_ptr<const metrics::CostProfile> profile;
-    try {
-        profile = std::make_shared<const metrics::CostProfile>(loadCostProfileOption(opt.costProfile));
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 1;
-    }
+    const auto profile = loadCostProfileOrReport(opt.costProfile);
+    if (!profile) return 1;
     return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt, profile]() -> PresetWork {
         auto cache = std::make_shared<SceneCache<>>();
         auto pass = std::make_shared<MeasurePass>();
