@@ -19,12 +19,22 @@ void addCalibrateCommand(CLI::App& cli, int& exitCode) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     cmd->add_option("--size", *size, "Override every preset's output size, WxH");
+    cmd->add_option("--sweeps", opt->sweeps,
+                    "Sweeps whose points join the calibration set, every 7th from the 4th (default: the shipped "
+                    "presets/sweeps/*.json); calibrate on the scenes you tune");
     cmd->add_option("--check", opt->check,
                     "Instead of calibrating, time these sweeps' points and compare them with --profile's modelled cost");
     cmd->add_option("--every", opt->every, "With --check: every k-th point of each sweep")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
+    cmd->add_option("--passes", opt->passes,
+                    "Time every point this many times, in passes over all of them, and join their frames (the "
+                    "machine's speed drifts over minutes)")
+        ->check(CLI::Range(1, 20))
+        ->capture_default_str();
     cmd->add_option("--profile", opt->profile, "With --check: the profile (default: the shipped llvmpipe profile)");
+    cmd->add_option("--samples", opt->samples,
+                    "Also write every timed point's counted work and frame times here (JSON lines)");
     cmd->add_flag("--debug-gl", opt->debugContext, "Debug context; GL errors fail the run");
     cmd->callback([opt, size, &exitCode] {
         if (!size->empty()) {

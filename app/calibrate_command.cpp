@@ -9,6 +9,7 @@
 #include "metrics/model_error.h"
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
+#include "renderer/render/pass_work_json.h"
 #include "renderer/render/scene_cache.h"
 #include "renderer/settings/settings_json.h"
 #include "sweep/sweep_spec.h"
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -80,6 +82,46 @@ void printPointLine(const std::string& counter, const std::string& name, const S
     std::fprintf(stderr, "\n");
 }
 
+// --samples: one line per timed point, written as the points are timed (a run stopped halfway
+// keeps what it timed).
+class SampleLog {
+public:
+    explicit SampleLog(const fs::path& file) {
+        if (file.empty()) return;
+        out_.open(file);
+        if (!out_) throw std::runtime_error("cannot write " + file.string());
+    }
+    void add(const std::string& sweep, const std::string& name, const Settings& s, const metrics::TimedFrames& t) {
+        if (!out_.is_open()) return;
+        const std::vector<double> totals = metrics::frameTotalsMs(t);
+        nlohmann::ordered_json j;
+        j["sweep"] = sweep;
+        j["name"] = name;
+        j["size"] = {s.output.width, s.output.height};
+        j["minMs"] = metrics::minimum(totals);
+        j["medianMs"] = metrics::median(totals);
+        j["framesMs"] = totals;
+        j["work"] = frameWorkJson(t.work);
+        out_ << j.dump() << "\n" << std::flush;
+    }
+
+private:
+    std::ofstream out_;
+};
+
+// Another pass's frames of the same point joined to the first's: the machine's speed drifts over
+// minutes, so the minimum over passes spread in time is steadier than over frames in a row.
+void addPass(metrics::TimedFrames& into, metrics::TimedFrames&& more) {
+    into.workStable = into.workStable && more.workStable && more.work == into.work;
+    for (FrameStats& f : more.frames) into.frames.push_back(std::move(f));
+}
+
+std::string passCounter(const char* what, int pass, int passes, std::size_t i, std::size_t n) {
+    std::string out = what;
+    if (passes > 1) out += " pass " + std::to_string(pass + 1) + "/" + std::to_string(passes);
+    return out + " [" + std::to_string(i + 1) + "/" + std::to_string(n) + "]";
+}
+
 void printProfile(const metrics::CostProfile& p) {
     for (metrics::PassKind k : metrics::kPassKinds) {
         const metrics::PassModel& m = p.pass(k);
@@ -91,24 +133,39 @@ void printProfile(const metrics::CostProfile& p) {
 
 int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     const fs::path presetDir = opt.presetDir.empty() ? defaultPresetDir() : opt.presetDir;
-    const std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size);
+    const std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size, opt.sweeps);
     SceneCache<> scenes;
     std::vector<metrics::CalibrationSample> samples;
     std::vector<std::pair<FrameWork, metrics::TimedFrames>> timed;
     std::vector<std::string> failed, timedNames;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const CalibrationPoint& p = points[i];
-        const std::string counter = "calibrate [" + std::to_string(i + 1) + "/" + std::to_string(points.size()) + "]";
-        try {
-            metrics::TimedFrames t = metrics::timeFrames(scenes.rendererFor(p.settings, p.presetDir), p.settings, opt.frames);
-            printPointLine(counter, p.name, p.settings, t, nullptr);
-            for (metrics::CalibrationSample& s : metrics::passSamples(p.name, t)) samples.push_back(std::move(s));
-            timed.emplace_back(t.work, std::move(t));
-            timedNames.push_back(p.name);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "%s %s: error: %s\n", counter.c_str(), p.name.c_str(), e.what());
-            failed.push_back(p.name);
+    SampleLog log(opt.samples);
+    std::vector<std::optional<metrics::TimedFrames>> byPoint(points.size());
+    std::vector<bool> broken(points.size(), false);
+    for (int pass = 0; pass < opt.passes; ++pass) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const CalibrationPoint& p = points[i];
+            if (broken[i]) continue;
+            const std::string counter = passCounter("calibrate", pass, opt.passes, i, points.size());
+            try {
+                metrics::TimedFrames t = metrics::timeFrames(scenes.rendererFor(p.settings, p.presetDir), p.settings, opt.frames);
+                printPointLine(counter, p.name, p.settings, t, nullptr);
+                if (byPoint[i]) addPass(*byPoint[i], std::move(t));
+                else byPoint[i] = std::move(t);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "%s %s: error: %s\n", counter.c_str(), p.name.c_str(), e.what());
+                failed.push_back(p.name);
+                broken[i] = true;
+                byPoint[i].reset();
+            }
         }
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!byPoint[i]) continue;
+        metrics::TimedFrames& t = *byPoint[i];
+        log.add("", points[i].name, points[i].settings, t);
+        for (metrics::CalibrationSample& s : metrics::passSamples(points[i].name, t)) samples.push_back(std::move(s));
+        timed.emplace_back(t.work, std::move(t));
+        timedNames.push_back(points[i].name);
     }
     std::vector<metrics::CalibrationFrame> frames;
     for (const auto& [work, t] : timed) {
@@ -150,11 +207,20 @@ int check(const CalibrateOptions& opt, const HeadlessContext& ctx) {
                      ctx.rendererName().c_str());
     SceneCache<> scenes;
     FrameComparison all;
+    SampleLog log(opt.samples);
     int unreadable = 0;
+    struct Checked {
+        std::string sweep, label;
+        Settings settings;
+        fs::path presetDir;
+        std::optional<metrics::TimedFrames> timed;
+    };
+    std::vector<Checked> checked;
     for (const fs::path& file : opt.check) {
         sweep::SweepSpec spec;
         try {
             spec = sweep::loadSweep(file);
+            for (const std::string& a : spec.adapted) std::fprintf(stderr, "note: %s: reference %s\n", spec.name.c_str(), a.c_str());
         } catch (const SettingsError& e) {  // the other sweeps still give figures
             for (const std::string& m : e.messages()) std::fprintf(stderr, "error: %s\n", m.c_str());
             ++unreadable;
@@ -164,14 +230,25 @@ int check(const CalibrateOptions& opt, const HeadlessContext& ctx) {
         for (std::size_t i = 0; i < points.size(); i += std::size_t(opt.every)) {
             Settings s = points[i].settings;
             if (opt.size) std::tie(s.output.width, s.output.height) = *opt.size;
-            const metrics::TimedFrames t = metrics::timeFrames(scenes.rendererFor(s, spec.presetDir), s, opt.frames);
-            const double model = metrics::modelFrame(profile, t.work).totalMs;
-            printPointLine("check " + spec.name + " [" + std::to_string(i + 1) + "/" + std::to_string(points.size()) + "]",
-                           points[i].label, s, t, &model);
-            all.add(model, t);
-            std::printf("%s\t%s\t%.3f\t%.3f\t%.3f\n", spec.name.c_str(), points[i].label.c_str(), model,
-                        all.minMs.back(), all.medianMs.back());
+            checked.push_back({spec.name, points[i].label, s, spec.presetDir, std::nullopt});
         }
+    }
+    for (int pass = 0; pass < opt.passes; ++pass) {
+        for (std::size_t i = 0; i < checked.size(); ++i) {
+            Checked& c = checked[i];
+            metrics::TimedFrames t = metrics::timeFrames(scenes.rendererFor(c.settings, c.presetDir), c.settings, opt.frames);
+            const double model = metrics::modelFrame(profile, t.work).totalMs;
+            printPointLine(passCounter(("check " + c.sweep).c_str(), pass, opt.passes, i, checked.size()), c.label,
+                           c.settings, t, &model);
+            if (c.timed) addPass(*c.timed, std::move(t));
+            else c.timed = std::move(t);
+        }
+    }
+    for (const Checked& c : checked) {
+        all.add(metrics::modelFrame(profile, c.timed->work).totalMs, *c.timed);
+        log.add(c.sweep, c.label, c.settings, *c.timed);
+        std::printf("%s\t%s\t%.3f\t%.3f\t%.3f\n", c.sweep.c_str(), c.label.c_str(), all.model.back(), all.minMs.back(),
+                    all.medianMs.back());
     }
     all.print(("sweep points against " + profile.renderer).c_str());
     if (unreadable)

@@ -3,6 +3,7 @@
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
+#include "sweep/sweep_spec.h"
 
 #include <algorithm>
 
@@ -36,6 +37,12 @@ constexpr Variant kVariants[] = {
     {"scenes/truck-town.json", R"({"cascades.count": 4, "cascades.mapSize": 1024, "cascades.fit": "scene"})"},
     {"scenes/fox.json", R"({"cascades.count": 4, "cascades.mapSize": 1024})"},
     {"scenes/palm-tree-island.json", R"({"cascades.count": 4, "cascades.mapSize": 2048})"},
+    // The screen-space mask draws the scene again: its cost follows the scene's triangles, which the
+    // builtin scenes (~150 primitives) cannot tell from a fixed cost.
+    {"scenes/dutch-ship.json", R"({"filter.kind": "hard", "filter.screenSpace": "blur", "filter.screenDownsample": 2, "filter.screenBlurRadius": 4})"},
+    {"scenes/zdm2-sauerbraten.json", R"({"filter.kind": "hard", "filter.screenSpace": "blur", "filter.screenDownsample": 1, "filter.screenBlurRadius": 2})"},
+    {"scenes/fox.json", R"({"filter.kind": "vsm", "cascades.mapSize": 1024})"},
+    {"scenes/palm-tree-island.json", R"({"filter.kind": "pcf-nxn", "filter.size": 5})"},
     {"default.json", R"({"cascades.depthBounds": "fit", "output.width": 640, "output.height": 360})"},
     {"default.json", R"({"cascades.count": 2, "cascades.mapSize": 4096})"},
     {"default.json", R"({"filter.kind": "vsm", "cascades.mapSize": 512})"},
@@ -82,9 +89,17 @@ std::vector<fs::path> presetsIn(const fs::path& dir, const fs::path& sub) {
 
 Json sized(int w, int h) { return Json{{"output.width", w}, {"output.height", h}}; }
 
+void addSweepPoints(const fs::path& file, std::vector<CalibrationPoint>& out) {
+    const sweep::SweepSpec spec = sweep::loadSweep(file);
+    const std::vector<sweep::Point> points = sweep::expandPoints(spec);
+    for (std::size_t i = kSweepFirst; i < points.size(); i += kSweepEvery)
+        out.push_back({spec.name + " " + points[i].label, points[i].settings, spec.presetDir});
+}
+
 }  // namespace
 
-std::vector<CalibrationPoint> calibrationSet(const fs::path& presetDir, std::optional<std::pair<int, int>> size) {
+std::vector<CalibrationPoint> calibrationSet(const fs::path& presetDir, std::optional<std::pair<int, int>> size,
+                                             std::vector<fs::path> sweeps) {
     std::vector<CalibrationPoint> out;
     for (const fs::path& p : presetsIn(presetDir, "")) {
         out.push_back(point(presetDir, p, sized(320, 180)));
@@ -94,6 +109,9 @@ std::vector<CalibrationPoint> calibrationSet(const fs::path& presetDir, std::opt
         for (const fs::path& p : presetsIn(presetDir, sub)) out.push_back(point(presetDir, p, sized(320, 180)));
     for (const fs::path& p : presetsIn(presetDir, "scenes")) out.push_back(point(presetDir, p, Json::object()));
     for (const Variant& v : kVariants) out.push_back(point(presetDir, v.preset, Json::parse(v.set)));
+    if (sweeps.empty())
+        for (const fs::path& p : presetsIn(presetDir, "sweeps")) sweeps.push_back(presetDir / p);
+    for (const fs::path& file : sweeps) addSweepPoints(file, out);
     if (size) {
         for (CalibrationPoint& p : out) {
             p.settings.output.width = size->first;

@@ -18,10 +18,17 @@ struct CalibrationPoint {
     std::filesystem::path presetDir;  // relative scene paths resolve against it
 };
 
-// The set, read from `presetDir` (the shipped presets folder). `size` overrides every point's
-// output size. Throws SettingsError naming the preset and the problem when a shipped preset is
-// missing or invalid.
+// Which points of a sweep join the calibration set: every kSweepEvery-th from the kSweepFirst-th
+// (0-based). scripts/bench_cost_model.sh checks points 0, 7, 14, ... (`--check --every 7`), so
+// the shipped sweeps' points it judges the model on are never the ones it was fitted on.
+inline constexpr std::size_t kSweepFirst = 3, kSweepEvery = 7;
+
+// The set, read from `presetDir` (the shipped presets folder), then the chosen points of `sweeps`
+// (empty: presetDir/sweeps/*.json): scenes the way they are tuned, with their own triangle sizes.
+// `size` overrides every point's output size. Throws SettingsError naming the preset or sweep and
+// the problem when one is missing or invalid.
 std::vector<CalibrationPoint> calibrationSet(const std::filesystem::path& presetDir,
-                                             std::optional<std::pair<int, int>> size = std::nullopt);
+                                             std::optional<std::pair<int, int>> size = std::nullopt,
+                                             std::vector<std::filesystem::path> sweeps = {});
 
 }  // namespace st::app

@@ -11,5 +11,6 @@ void addSweepCommand(CLI::App& cli, int& exitCode);
 void addCompareCommand(CLI::App& cli, int& exitCode);
 void addExportCommand(CLI::App& cli, int& exitCode);
 void addCalibrateCommand(CLI::App& cli, int& exitCode);
+void addTuneCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

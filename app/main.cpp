@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     st::app::addCompareCommand(cli, exitCode);
     st::app::addExportCommand(cli, exitCode);
     st::app::addCalibrateCommand(cli, exitCode);
+    st::app::addTuneCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

@@ -85,6 +85,7 @@ int runSweepCommand(const SweepCommandOptions& opt) {
         }
         if (opt.sweepFile.empty()) throw std::invalid_argument("give a sweep file, or --merge DIR... to join shards");
         const sweep::SweepSpec spec = sweep::loadSweep(opt.sweepFile);
+        for (const std::string& a : spec.adapted) std::fprintf(stderr, "note: reference %s\n", a.c_str());
         sweep::RunOptions ro;
         ro.outDir = opt.outDir;
         if (!opt.shard.empty()) std::tie(ro.shardIndex, ro.shardCount) = parseShard(opt.shard);

@@ -70,9 +70,9 @@ double featureValue(const PassWork& w, Feature f) {
 std::vector<Feature> defaultFeatures(PassKind k) {
     using F = Feature;
     switch (k) {
-        case PassKind::Cascade: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::TexelsCleared};
-        case PassKind::Main: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::FilterTaps};
-        case PassKind::Filter: return {F::Intercept, F::Fragments, F::FilterTaps};
+        case PassKind::Cascade: return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::TexelsCleared};
+        case PassKind::Main: return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::SamplesPassed, F::FilterTaps};
+        case PassKind::Filter: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::FilterTaps};
         case PassKind::DepthBounds: return {F::Intercept, F::Fragments, F::ComputeInvocations};
     }
     return {};

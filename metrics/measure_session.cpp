@@ -5,8 +5,10 @@
 #include "metrics/resolution_check.h"
 #include "renderer/csm/cascade_plan.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 namespace st::metrics {
 namespace fs = std::filesystem;
@@ -77,6 +79,21 @@ CostReport measureCost(Renderer& r, const Settings& s, int frames) {
     return summariseCost(timed, covered, s.cascades.mapSize);
 }
 
+namespace {
+// The cost of `frame`'s settings without timing them: its work with kept maps priced as redrawn.
+CostReport countedCost(const FrameStats& frame, const Settings& s) {
+    FrameStats counted = frame;
+    counted.work = withEveryMapRedrawn(frame);
+    CostReport r = summariseCost({counted}, {}, s.cascades.mapSize);
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    r.frames = 0;
+    r.gpuShadowMs = r.gpuMainMs = r.gpuFilterMs = r.cpuMs = none;
+    r.gpuShadowRange = r.gpuMainRange = r.gpuFilterRange = r.cpuRange = {none, none};
+    for (CascadeCost& c : r.cascades) c.gpuMs = none;
+    return r;
+}
+}  // namespace
+
 std::vector<std::string> frameWarnings(Renderer& r, MeasurePass& pass, const Settings& s, const FrameStats& stats,
                                        const MapWarningLimits& limits) {
     std::vector<std::string> out = zExtensionWarnings(stats);
@@ -88,30 +105,33 @@ std::vector<std::string> frameWarnings(Renderer& r, MeasurePass& pass, const Set
 }
 
 namespace {
-// The truth of `samples`, traced unless the entry's last frame had exactly these inputs.
-std::vector<std::uint8_t> cachedTruth(MeasureSession::SceneEntry& e, const MeasureSamples& samples, glm::vec3 toSun,
-                                      glm::vec3 eye) {
-    const bool same = !e.lastTruth.empty() && e.lastToSun == toSun && e.lastEye == eye &&
-                      e.lastPositions == samples.position && e.lastNormals == samples.normal &&
-                      e.lastGeometry == samples.geometry;
-    if (!same) {
-        e.lastDisc.reset();  // the soft truth was of other samples
-        e.lastTruth = e.truth->trace(samples, toSun, eye);
-        e.lastPositions = samples.position;
-        e.lastNormals = samples.normal;
-        e.lastGeometry = samples.geometry;
-        e.lastToSun = toSun;
-        e.lastEye = eye;
+// The cached truth of exactly these inputs, moved to the front; traced into a new front entry
+// (dropping the least recently used past kCachedViews) when none matches.
+MeasureSession::CachedTruth& cachedTruth(MeasureSession::SceneEntry& e, const MeasureSamples& samples, glm::vec3 toSun,
+                                         glm::vec3 eye) {
+    auto& views = e.views;
+    const auto same = [&](const MeasureSession::CachedTruth& c) {
+        return c.toSun == toSun && c.eye == eye && c.positions == samples.position && c.normals == samples.normal &&
+               c.geometry == samples.geometry;
+    };
+    if (const auto it = std::find_if(views.begin(), views.end(), same); it != views.end()) {
+        std::rotate(views.begin(), it, it + 1);
+        return views.front();
     }
-    return e.lastTruth;
+    MeasureSession::CachedTruth c{samples.position, samples.normal, samples.geometry, toSun, eye,
+                                  e.truth->trace(samples, toSun, eye), std::nullopt, {}};
+    views.insert(views.begin(), std::move(c));
+    if (views.size() > MeasureSession::kCachedViews) views.pop_back();
+    return views.front();
 }
-// The soft truth of `samples` (cachedTruth() must have run on them just before: it keeps the
-// entry's inputs), traced unless the entry holds it for this disc. Returns the milliseconds spent.
-double cachedSoftTruth(MeasureSession::SceneEntry& e, const MeasureSamples& samples, const SunDisc& disc) {
-    if (e.lastDisc && *e.lastDisc == disc) return 0.0;
+// The soft truth of `c`'s samples for this disc, traced unless `c` holds it. Returns the
+// milliseconds spent.
+double cachedSoftTruth(MeasureSession::SceneEntry& e, MeasureSession::CachedTruth& c, const MeasureSamples& samples,
+                       const SunDisc& disc) {
+    if (c.disc && *c.disc == disc) return 0.0;
     const auto t0 = Clock::now();
-    e.lastSoft = e.truth->traceDisc(samples, e.lastToSun, disc, e.lastEye);
-    e.lastDisc = disc;
+    c.soft = e.truth->traceDisc(samples, c.toSun, disc, c.eye);
+    c.disc = disc;
     return msSince(t0);
 }
 
@@ -130,7 +150,8 @@ void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settin
     m.samples = sampleFrame(*e.renderer, pass, s, s, &m.frame);
     m.timings.measurePassMs = msSince(t0);
     t0 = Clock::now();
-    m.truth = cachedTruth(e, m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
+    MeasureSession::CachedTruth& cached = cachedTruth(e, m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
+    m.truth = cached.truth;
     m.timings.groundTruthMs = msSince(t0);
     const ResolutionCheck check(*e.truth, e.renderer->plan(), s.cascades.mapSize, s.camera.position);
     m.accuracy = scoreAccuracy(m.samples, m.truth, s.cascades.count, [&](std::size_t i, bool mapLit) {
@@ -138,8 +159,8 @@ void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settin
                               m.samples.cascade(i), mapLit);
     });
     m.sun = sunDisc(s);
-    m.timings.softTruthMs = cachedSoftTruth(e, m.samples, m.sun);
-    m.softTruth = e.lastSoft;
+    m.timings.softTruthMs = cachedSoftTruth(e, cached, m.samples, m.sun);
+    m.softTruth = cached.soft;
     m.soft = scoreSoftAccuracy(m.samples, m.softTruth, texelWorldSizes(e.renderer->plan()),
                                {.k = s.measure.artifactTexels});
     m.density = texelDensity(m.samples, s.cascades.count);
@@ -165,7 +186,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
                     std::to_string(m.sun.angularDiameter).substr(0, 4) + " deg)");
     if (opt.cost) {
         const auto t0 = Clock::now();
-        m.cost = measureCost(*e.renderer, s, opt.costFrames);
+        m.cost = opt.costFrames > 0 ? measureCost(*e.renderer, s, opt.costFrames) : countedCost(m.frame, s);
         if (opt.costProfile) {
             m.cost->model = modelFrame(*opt.costProfile, m.cost->work);
             m.cost->profile = profileName(*opt.costProfile);

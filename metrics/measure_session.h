@@ -58,7 +58,10 @@ struct PresetMeasurement {
 
 struct MeasureOptions {
     bool cost = true;
-    int costFrames = 5;   // timed frames, after one warm-up frame
+    // Timed frames, after one warm-up frame. 0: counted, not timed: the cost comes from the
+    // measured frame's work with every map priced as redrawn (withEveryMapRedrawn), its timers are
+    // NaN, and no frame is rendered for it (what a tune evaluation needs: the modelled cost).
+    int costFrames = 5;
     const CostProfile* costProfile = nullptr;  // models the cost (CostReport::model) when set
     bool flicker = true;  // replay s.path when it has frames
     MapWarningLimits warningLimits;  // when a cascade's map counts as wasted
@@ -76,18 +79,23 @@ public:
 
     // The scene, renderer and BVH for a scene spec; scene and renderer are created on first use,
     // the BVH (truth) by measure() when it first needs it.
-    struct TruthSlot {
-        std::unique_ptr<GroundTruth> truth;
-        // The last frame's traced truth and what it depends on. The truth is a function of the
-        // surface samples, the sun and the eye only, not of any shadow setting, so a sweep whose
-        // points share scene, camera, light and size traces it once (compared exactly, not by key).
-        std::vector<glm::vec4> lastPositions, lastNormals, lastGeometry;
-        glm::vec3 lastToSun{0.0f}, lastEye{0.0f};
-        std::vector<std::uint8_t> lastTruth;
+    // One frame's traced truth and what it depends on. The truth is a function of the surface
+    // samples, the sun and the eye only, not of any shadow setting, so points that share scene,
+    // camera, light and size trace it once (compared exactly, not by key).
+    struct CachedTruth {
+        std::vector<glm::vec4> positions, normals, geometry;
+        glm::vec3 toSun{0.0f}, eye{0.0f};
+        std::vector<std::uint8_t> truth;
         // The soft truth of the same frame, for the disc it was traced with (the same inputs
         // plus light.angularDiameter and measure.sunRays; the seed is fixed).
-        std::optional<SunDisc> lastDisc;
-        SoftTruth lastSoft;
+        std::optional<SunDisc> disc;
+        SoftTruth soft;
+    };
+    // A tune alternates between a few views; each keeps its truth (most recently used first).
+    static constexpr std::size_t kCachedViews = 8;
+    struct TruthSlot {
+        std::unique_ptr<GroundTruth> truth;
+        std::vector<CachedTruth> views;
     };
     using SceneEntry = SceneCache<TruthSlot>::Entry;
     SceneEntry& entryFor(const Settings& s, const std::filesystem::path& presetDir);

@@ -63,16 +63,8 @@ void writeCsv(const fs::path& file, const Manifest& m, const std::vector<PointRe
     writeTextAtomic(file, text);
 }
 
-// Scene paths in the saved presets are relative to the base preset's folder: rewrite them for
-// a preset in `folder`, or keep them absolute where no relative path exists.
 nlohmann::ordered_json presetIn(const fs::path& folder, const Manifest& m, nlohmann::ordered_json settings) {
-    const std::string scene = settings.value("scene", "");
-    if (!scene.empty() && scene.rfind("builtin:", 0) != 0 && fs::path(scene).is_relative()) {
-        const fs::path abs = (m.presetDir / scene).lexically_normal();
-        const fs::path rel = abs.lexically_relative(fs::absolute(folder).lexically_normal());
-        settings["scene"] = rel.empty() ? abs.string() : rel.string();
-    }
-    return settings;
+    return presetInFolder(folder, m.presetDir, std::move(settings));
 }
 
 std::string machineLine(const Manifest& m) { return m.machine.empty() ? "" : "machine: " + m.machine; }
@@ -189,6 +181,16 @@ std::vector<std::string> writeFront(const fs::path& dir, const Manifest& m, cons
 }
 
 }  // namespace
+
+nlohmann::ordered_json presetInFolder(const fs::path& folder, const fs::path& presetDir, nlohmann::ordered_json settings) {
+    const std::string scene = settings.value("scene", "");
+    if (!scene.empty() && scene.rfind("builtin:", 0) != 0 && fs::path(scene).is_relative()) {
+        const fs::path abs = (presetDir / scene).lexically_normal();
+        const fs::path rel = abs.lexically_relative(fs::absolute(folder).lexically_normal());
+        settings["scene"] = rel.empty() ? abs.string() : rel.string();
+    }
+    return settings;
+}
 
 std::vector<std::string> writeReport(const fs::path& dir, const Manifest& m, const std::vector<PointResult>& results,
                                      const ReportOptions& opt, const metrics::FigureTable& table) {

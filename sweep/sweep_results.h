@@ -83,6 +83,11 @@ std::vector<std::string> costChoices();            // every name costFigure() ta
 // A figure's title word with its unit: "misclassified %", "GPU total ms".
 std::string shortName(const metrics::FigureRow& row);
 
+// `settings` (a preset whose relative scene path starts at `presetDir`) as a preset saved in
+// `folder`: the scene path rewritten relative to it, or absolute where no relative path exists.
+nlohmann::ordered_json presetInFolder(const std::filesystem::path& folder, const std::filesystem::path& presetDir,
+                                      nlohmann::ordered_json settings);
+
 // Writes every report file into `dir` from the points found (any subset of the manifest's).
 // Returns the ids of the front points.
 // results.csv has the table's sweep rows as columns, in table order.

@@ -167,12 +167,40 @@ void readAxes(const Json& root, SweepSpec& spec, Problems& p) {
     }
 }
 
+std::string metres(float m) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g m", double(m));
+    return text;
+}
+
 // A reference's own method (cascades, filter, bias) on the base's scene, camera, light and size.
-Settings onBase(const Settings& base, const Settings& ref) {
+// Its distances were chosen for its own camera: when its shadow range (shadow distance, or its far
+// plane) reaches past the base's far plane, the range becomes the base's far plane and manual
+// splits keep their proportions of it. Anything else is kept as the reference has it.
+Settings onBase(const Settings& base, const Settings& ref, const std::string& name, std::vector<std::string>& adapted) {
     Settings s = base;
     s.cascades = ref.cascades;
     s.filter = ref.filter;
     s.bias = ref.bias;
+    const float far = base.camera.farPlane;
+    const float refEnd = ref.cascades.shadowDistance > 0.0f ? ref.cascades.shadowDistance : ref.camera.farPlane;
+    const auto& splits = ref.cascades.manualSplits;
+    const bool outside = ref.cascades.shadowDistance > far ||
+                         std::any_of(splits.begin(), splits.end(), [far](float d) { return d >= far; });
+    if (!outside || refEnd <= far) return s;
+    const float scale = far / refEnd;
+    std::string what = name + ": shadow range " + metres(refEnd) + " is past this scene's far plane (" + metres(far) +
+                       "); it ends at the far plane";
+    s.cascades.shadowDistance = 0.0f;
+    if (!s.cascades.manualSplits.empty()) {
+        what += ", and the manual splits keep their proportions:";
+        for (float& split : s.cascades.manualSplits) {
+            what += " " + metres(split) + " ->";
+            split *= scale;
+            what += " " + metres(split);
+        }
+    }
+    adapted.push_back(what);
     return s;
 }
 
@@ -187,7 +215,8 @@ void readReferences(const Json& root, SweepSpec& spec, Problems& p) {
             continue;
         }
         const fs::path file = relativeTo(spec.file, (*it)[i].get<std::string>());
-        if (auto ref = readPreset(file, path, p)) spec.references.push_back({file.stem().string(), onBase(spec.base, *ref)});
+        if (auto ref = readPreset(file, path, p)) spec.references.push_back(
+                {file.stem().string(), onBase(spec.base, *ref, file.stem().string(), spec.adapted)});
     }
 }
 
@@ -222,6 +251,11 @@ void checkPoints(const SweepSpec& spec, Problems& p) {
 }
 
 }  // namespace
+
+Settings referenceOnBase(const Settings& base, const Settings& ref, const std::string& name,
+                         std::vector<std::string>& adapted) {
+    return onBase(base, ref, name, adapted);
+}
 
 SweepSpec loadSweep(const fs::path& file) {
     SweepSpec spec;

@@ -43,10 +43,19 @@ struct SweepSpec {
     Settings base;
     std::vector<Axis> axes;
     std::vector<Reference> references;
+    // What loading changed to make a reference fit the base's scene ("soft-shadows-blog: ..."):
+    // the commands print these, so a reference is never quietly something else.
+    std::vector<std::string> adapted;
 };
 
 // Throws SettingsError listing every problem; a sweep with any invalid point is refused whole.
 SweepSpec loadSweep(const std::filesystem::path& file);
+
+// A reference preset's method (cascades, filter, bias) on `base`'s scene, camera, light and size,
+// its shadow range fitted to base's far plane where it reaches past it (then `adapted` gets a line
+// saying so, naming the reference `name`). What a sweep's "references" and a tune's --budget-from do.
+Settings referenceOnBase(const Settings& base, const Settings& ref, const std::string& name,
+                         std::vector<std::string>& adapted);
 
 struct Point {
     std::string id;     // stable across runs and machines: a hash of the point's settings

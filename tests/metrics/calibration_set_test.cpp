@@ -1,10 +1,12 @@
 // `shadowtune calibrate`'s fixed set: every shipped preset it names loads and validates, and the
 // set spans the work the sweeps ask for (sizes, map sizes, cascade counts, filters, depth bounds).
 #include "app/calibration_set.h"
+#include "sweep/sweep_spec.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <set>
 
 namespace st::app {
@@ -33,6 +35,28 @@ TEST(CalibrationSetTest, SpansTheSweptKnobs) {
     for (int size : {512, 1024, 2048, 4096}) EXPECT_TRUE(mapSizes.count(size)) << size;
     for (int count : {1, 2, 3, 4}) EXPECT_TRUE(counts.count(count)) << count;
     EXPECT_TRUE(widths.count(320) && widths.count(640));
+}
+
+// scripts/bench_cost_model.sh judges the model on points 0, 7, 14, ... of the shipped sweeps
+// (`calibrate --check --every 7`): a point the set fitted on must not be one of them.
+TEST(CalibrationSetTest, TakesTheShippedSweepsPointsTheBenchDoesNotCheck) {
+    const std::vector<CalibrationPoint> set = calibrationSet(ST_PRESET_DIR);
+    const std::filesystem::path sweeps = std::filesystem::path(ST_PRESET_DIR) / "sweeps";
+    std::size_t fromSweeps = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(sweeps)) {
+        const sweep::SweepSpec spec = sweep::loadSweep(entry.path());
+        const std::vector<sweep::Point> points = sweep::expandPoints(spec);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const std::string name = spec.name + " " + points[i].label;
+            const bool inSet = std::any_of(set.begin(), set.end(), [&](const CalibrationPoint& p) {
+                return p.name == name && p.settings == points[i].settings;
+            });
+            EXPECT_EQ(inSet, i >= kSweepFirst && (i - kSweepFirst) % kSweepEvery == 0) << name;
+            if (i % 7 == 0) EXPECT_FALSE(inSet) << name << " is one the bench checks";
+            fromSweeps += inSet;
+        }
+    }
+    EXPECT_GE(fromSweeps, 30u);
 }
 
 TEST(CalibrationSetTest, SizeOverridesEveryPoint) {

@@ -66,6 +66,33 @@ TEST(SweepSpecTest, ReferencesTakeTheirMethodOntoTheBase) {
     EXPECT_EQ(spec.base.cascades.mapSize, 2048);  // "set" applies to the base
 }
 
+// The shipped sweeps put seed presets chosen for a 400 m view on 60 m and 300 m scenes: a reference
+// whose range is past the base's far plane ends there, its manual splits in proportion, and says so.
+TEST(SweepSpecTest, AReferencePastTheFarPlaneEndsThereAndKeepsItsSplitProportions) {
+    test::TempDir dir;
+    dir.write("base.json", R"({"version": 1, "scene": "builtin:box-over-plane", "camera": {"farPlane": 60},
+        "output": {"width": 64, "height": 36}})");
+    dir.write("far.json", R"({"version": 1, "camera": {"farPlane": 1000}, "cascades": {"count": 3,
+        "scheme": "manual", "manualSplits": [20, 80], "shadowDistance": 400}})");
+    dir.write("near.json", R"({"version": 1, "camera": {"farPlane": 200}, "cascades": {"count": 2,
+        "scheme": "manual", "manualSplits": [30], "shadowDistance": 50}})");
+    const SweepSpec spec = loadSweep(dir.write("s.json", R"({"version": 1, "base": "base.json",
+        "references": ["far.json", "near.json"]})"));
+    const std::vector<Point> points = expandPoints(spec);
+    ASSERT_EQ(points.size(), 2u);
+    const CascadeSettings& far = points[0].settings.cascades;
+    EXPECT_FLOAT_EQ(far.shadowDistance, 0.0f) << "ends at the base's far plane";
+    ASSERT_EQ(far.manualSplits.size(), 2u);
+    EXPECT_FLOAT_EQ(far.manualSplits[0], 3.0f);  // 20 of 400 m is 3 of 60 m
+    EXPECT_FLOAT_EQ(far.manualSplits[1], 12.0f);
+    EXPECT_FLOAT_EQ(points[1].settings.cascades.shadowDistance, 50.0f) << "a reference that fits is kept";
+    EXPECT_FLOAT_EQ(points[1].settings.cascades.manualSplits[0], 30.0f);
+    ASSERT_EQ(spec.adapted.size(), 1u);
+    EXPECT_NE(spec.adapted[0].find("far: shadow range 400 m is past this scene's far plane (60 m)"), std::string::npos)
+        << spec.adapted[0];
+    EXPECT_NE(spec.adapted[0].find("20 m -> 3 m 80 m -> 12 m"), std::string::npos) << spec.adapted[0];
+}
+
 TEST(SweepSpecTest, ShardsSplitThePointsWithoutOverlap) {
     std::vector<Point> points(10);
     for (int i = 0; i < 10; ++i) points[std::size_t(i)].id = std::to_string(i);

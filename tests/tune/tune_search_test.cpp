@@ -1,0 +1,142 @@
+// The tuner's search on functions whose best point is known: it reaches that point within the
+// budget, never evaluates a point twice or past its limit, repeats itself for a seed, and stops
+// when asked. No GL: the evaluator is a formula over the settings.
+#include "tune/tune_search.h"
+
+#include "renderer/settings/settings_json.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace st::tune {
+namespace {
+
+// Error falls toward lambda 0.9, slope 0.5, constant 0.01, 3 cascades of 2048; cost grows with
+// cascades x texels. The best point within 25 "ms" is therefore known by enumeration.
+Evaluation bowl(const Settings& s) {
+    Evaluation e;
+    e.error = std::pow(s.cascades.lambda - 0.9, 2) + std::pow(s.bias.slope - 0.5, 2) +
+              std::pow(s.bias.constant - 0.01, 2) * 100.0 + 1.0 / (s.cascades.count * double(s.cascades.mapSize));
+    e.costMs = s.cascades.count * double(s.cascades.mapSize) * s.cascades.mapSize / 1e6 * 2.0;
+    e.mapBytes = 4.0 * s.cascades.count * double(s.cascades.mapSize) * s.cascades.mapSize;
+    return e;
+}
+
+Space smallSpace() {
+    Space all = defaultSpace(Settings{});
+    Space s;
+    for (const char* p : {"cascades.count", "cascades.lambda", "cascades.mapSize", "bias.constant", "bias.slope"})
+        s.dims.push_back(*all.find(p));
+    return s;
+}
+
+// The best of every combination of the space's values within the budget.
+Candidate bruteForce(const Space& space, const Budget& budget) {
+    Candidate best;
+    best.feasible = false;
+    std::vector<std::size_t> idx(space.dims.size(), 0);
+    while (true) {
+        Settings s;
+        for (std::size_t d = 0; d < idx.size(); ++d) s = withValue(s, space.dims[d], idx[d]);
+        Candidate c{s, bowl(s), "", false};
+        c.feasible = budget.fits(c.eval);
+        if (c.feasible && (!best.feasible || better(c, best))) best = c;
+        std::size_t d = 0;
+        while (d < idx.size() && ++idx[d] == space.dims[d].values.size()) idx[d++] = 0;
+        if (d == idx.size()) return best;
+    }
+}
+
+TEST(TuneSearchTest, ReachesTheBestPointWithinTheBudget) {
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 300;
+    const Candidate truth = bruteForce(space, opt.budget);
+    ASSERT_TRUE(truth.feasible);
+    const SearchResult r = search({Settings{}}, space, bowl, opt);
+    ASSERT_TRUE(r.best);
+    const Candidate& got = r.evaluated[*r.best];
+    EXPECT_TRUE(got.feasible);
+    EXPECT_LE(got.eval.costMs, 25.0);
+    EXPECT_NEAR(got.eval.error, truth.eval.error, 1e-12) << toOrderedJson(got.settings).dump();
+    std::size_t grid = 1;
+    for (const Dimension& d : space.dims) grid *= d.values.size();
+    EXPECT_LT(r.evaluations, int(grid / 10)) << "a walk, not a grid";
+}
+
+TEST(TuneSearchTest, EvaluatesEachPointOnceAndNeverPastItsLimit) {
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 17;
+    int calls = 0;
+    std::set<std::string> seen;
+    const SearchResult r = search({Settings{}}, space, [&](const Settings& s) {
+        ++calls;
+        EXPECT_TRUE(seen.insert(toOrderedJson(s).dump()).second) << "evaluated twice";
+        return bowl(s);
+    }, opt);
+    EXPECT_EQ(calls, 17);
+    EXPECT_EQ(r.evaluations, 17);
+    EXPECT_FALSE(r.stopped) << "running out of evaluations is not a stop";
+}
+
+TEST(TuneSearchTest, TheSameSeedWalksTheSameWay) {
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 60;
+    const SearchResult a = search({Settings{}}, space, bowl, opt);
+    const SearchResult b = search({Settings{}}, space, bowl, opt);
+    ASSERT_EQ(a.evaluated.size(), b.evaluated.size());
+    for (std::size_t i = 0; i < a.evaluated.size(); ++i) EXPECT_EQ(a.evaluated[i].settings, b.evaluated[i].settings) << i;
+    opt.seed = 2;
+    const SearchResult c = search({Settings{}}, space, bowl, opt);
+    bool differs = c.evaluated.size() != a.evaluated.size();
+    for (std::size_t i = 0; !differs && i < a.evaluated.size(); ++i) differs = !(a.evaluated[i].settings == c.evaluated[i].settings);
+    EXPECT_TRUE(differs) << "another seed walks in another order";
+}
+
+TEST(TuneSearchTest, AStartOverTheBudgetWalksBackIntoIt) {
+    const Space space = smallSpace();
+    Settings start;
+    start.cascades.count = 6;
+    start.cascades.mapSize = 4096;  // 6 x 4096^2 x 2e-6 = 201 "ms"
+    SearchOptions opt;
+    opt.budget.ms = 10.0;
+    opt.evaluations = 200;
+    const SearchResult r = search({start}, space, bowl, opt);
+    ASSERT_TRUE(r.best);
+    EXPECT_LE(r.evaluated[*r.best].eval.costMs, 10.0);
+    EXPECT_FALSE(r.evaluated.front().feasible);
+}
+
+TEST(TuneSearchTest, StopsWhenAskedAndSaysSo) {
+    int calls = 0;
+    SearchOptions opt;
+    opt.evaluations = 100;
+    opt.stopRequested = [&] { return calls >= 5; };
+    const SearchResult r = search({Settings{}}, smallSpace(), [&](const Settings& s) { ++calls; return bowl(s); }, opt);
+    EXPECT_TRUE(r.stopped);
+    EXPECT_EQ(r.evaluations, 5);
+}
+
+TEST(TuneSearchTest, RefusedSettingsAreNotEvaluated) {
+    Space space = smallSpace();
+    space.dims.push_back({"cascades.blendBand", {0.0, 0.9}});  // 0.9 is past the field's 0.5 limit
+    int calls = 0;
+    SearchOptions opt;
+    opt.evaluations = 400;
+    const SearchResult r = search({Settings{}}, space, [&](const Settings& s) {
+        ++calls;
+        EXPECT_LE(s.cascades.blendBand, 0.5f);
+        return bowl(s);
+    }, opt);
+    EXPECT_EQ(calls, r.evaluations);
+}
+
+}  // namespace
+}  // namespace st::tune

@@ -1,0 +1,329 @@
+#include "tune/tune_run.h"
+
+#include "metrics/figure_table.h"
+#include "renderer/image/image_io.h"
+#include "renderer/settings/settings_json.h"
+#include "sweep/sweep_results.h"
+#include "sweep/sweep_spec.h"
+#include "tune/tune_eval.h"
+#include "tune/tune_explain.h"
+#include "tune/tune_journal.h"
+#include "tune/tune_views.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace st::tune {
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+namespace {
+
+constexpr int kTuneVersion = 1;
+constexpr double kMiB = 1024.0 * 1024.0;
+
+std::string fixed(double v, int decimals) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f", decimals, v);
+    return text;
+}
+
+std::string errorText(const std::string& choice, double raw) {
+    const metrics::FigureRow& row = sweep::errorFigure(choice);
+    const metrics::UnitInfo& u = metrics::unitInfo(row.unit);
+    char text[48];
+    std::snprintf(text, sizeof text, "%.4g", raw * u.scale);  // errors span 1e-5 .. 1: significant digits
+    return text + (u.symbol[0] ? " " + std::string(u.symbol) : "");
+}
+
+std::string budgetText(const Budget& b) {
+    std::string t;
+    if (b.ms) t += fixed(*b.ms, 1) + " ms";
+    if (b.bytes) t += (t.empty() ? "" : " and ") + fixed(*b.bytes / kMiB, 1) + " MiB";
+    return t;
+}
+
+// The folder belongs to one tune: the same preset, objective, budget, views, seed and profile.
+// More evaluations may be asked of a resumed tune.
+void claimFolder(const fs::path& dir, const Json& identity) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw std::runtime_error(dir.string() + ": cannot create output folder: " + (ec ? ec.message() : "not a directory"));
+    const fs::path file = dir / "tune.json";
+    if (std::ifstream in(file); in) {
+        Json there;
+        try {
+            there = Json::parse(in);
+        } catch (const nlohmann::json::exception& e) {
+            throw std::runtime_error(file.string() + ": not valid JSON: " + e.what());
+        }
+        if (there != identity)
+            throw std::runtime_error(dir.string() + ": holds another tune (another preset, objective, budget, views, "
+                                     "seed or profile; see its tune.json); give another --out or remove it");
+        return;
+    }
+    writeTextAtomic(file, identity.dump(2) + "\n");
+}
+
+// The cheapest settings of the space on the input's scene: if they miss the budget, nothing fits.
+Settings cheapest(Settings s) {
+    s.cascades.count = 1;
+    s.cascades.mapSize = 256;
+    s.cascades.mapSizes.clear();
+    s.cascades.manualSplits.clear();
+    if (s.cascades.scheme == SplitScheme::Manual) s.cascades.scheme = SplitScheme::Practical;
+    s.cascades.depthBounds = DepthBounds::Off;
+    s.cascades.fit = FitMode::Cascade;
+    s.cascades.blendBand = 0.0f;
+    s.filter.kind = FilterKind::Hard;
+    s.filter.screenSpace = ScreenSpace::Off;
+    return s;
+}
+
+// Analytic starting points: splits from the depth range the camera actually sees (depth bounds:
+// SDSM), a light box fitted to the visible samples, and bias in texel units (slope 1 texel per
+// unit of tan, half a texel of normal offset) with no constant in metres.
+std::vector<Settings> starts(const Settings& input) {
+    Settings seen = input;
+    seen.cascades.depthBounds = DepthBounds::Fit;
+    seen.cascades.fit = FitMode::Samples;
+    Settings texelBias = seen;
+    texelBias.bias.constant = 0.0f;
+    texelBias.bias.slope = 1.0f;
+    texelBias.bias.normalOffset = 0.5f;
+    return {input, seen, texelBias};
+}
+
+class Tuner {
+public:
+    explicit Tuner(const TuneOptions& opt) : opt_(opt) {}
+
+    TuneOutcome run() {
+        const auto t0 = std::chrono::steady_clock::now();
+        input_ = loadPreset(opt_.preset);
+        if (opt_.size) std::tie(input_.output.width, input_.output.height) = *opt_.size;
+        presetDir_ = fs::absolute(opt_.preset).parent_path();
+        views_ = tuneViews(input_, opt_.views, opt_.holdOutEvery);
+        references();
+        claimFolder(opt_.outDir, identity());
+        journal_.emplace(opt_.outDir / "evaluations.jsonl");
+        resumed_ = int(journal_->size());
+        if (resumed_ > 0) say("resuming: " + std::to_string(resumed_) + " evaluations journaled in " + opt_.outDir.string());
+        evaluator_.emplace(session_, presetDir_, views_, *opt_.profile, Objective{opt_.objective, {}});
+        resolveBudget();
+        TuneOutcome out;
+        const Evaluation cheap = measured(cheapest(input_), "tuned");
+        if (!budget_.fits(judge(cheap, {opt_.objective, {}}))) {
+            out.infeasible = true;
+            out.message = "no settings fit the budget of " + budgetText(budget_) + ": the cheapest (1 cascade of 256^2, hard "
+                          "filter) models " + fixed(judge(cheap, {}).costMs, 1) + " ms and " +
+                          fixed(judge(cheap, {}).mapBytes / kMiB, 2) + " MiB on these views";
+            return out;
+        }
+        const Evaluation inputRaw = measured(input_, "tuned");
+        objective_ = {opt_.objective, artifactLimits(inputRaw.figures)};
+        SearchOptions so;
+        so.budget = budget_;
+        so.evaluations = opt_.evaluations;
+        so.seed = opt_.seed;
+        so.stopRequested = opt_.stopRequested;
+        so.progress = [this](const SearchProgress& p) { progress(p); };
+        const Space space = defaultSpace(input_);
+        std::vector<Settings> from = starts(input_);
+        for (const auto& [name, r] : refs_) from.push_back(r);  // a reference's method is within budget by definition
+        result_ = search(from, space, [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); }, so);
+        out.evaluations = made_;
+        out.resumed = resumed_;
+        out.stopped = result_.stopped;
+        if (out.stopped) {
+            out.message = "stopped after " + std::to_string(result_.evaluations) + " evaluations; run the same command to resume";
+            return out;
+        }
+        if (!result_.best) {
+            out.infeasible = true;
+            out.message = "no point within the budget of " + budgetText(budget_) + " kept the artifact classes at the input's "
+                          "level in " + std::to_string(result_.evaluations) + " evaluations";
+            return out;
+        }
+        const Candidate& best = result_.evaluated[*result_.best];
+        writeOutputs(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        out.evaluations = made_;
+        out.message = "tuned: " + errorText(opt_.objective, best.eval.error) + " " + sweep::errorFigure(opt_.objective).label +
+                      " (input " + errorText(opt_.objective, judge(inputRaw, objective_).error) + ") at " +
+                      fixed(best.eval.costMs, 1) + " ms modelled (budget " + budgetText(budget_) + ") -> " +
+                      (opt_.outDir / "tuned.json").string();
+        return out;
+    }
+
+private:
+    void say(const std::string& line) const {
+        if (opt_.progress) opt_.progress(line);
+    }
+
+    // The journaled measurement of `s` on `views`, or a new one (journaled at once).
+    Evaluation measured(const Settings& s, const std::string& views) {
+        if (std::optional<Evaluation> e = journal_->find(s, views)) return *e;
+        Evaluation e = evaluator_->measure(s, views == "held-out");
+        journal_->add(s, views, e);
+        ++made_;
+        return e;
+    }
+
+    void references() {
+        for (const fs::path& file : opt_.budgetFrom) {
+            std::vector<std::string> adapted;
+            const Settings ref = loadPreset(file);
+            refs_.push_back({file.stem().string(), sweep::referenceOnBase(input_, ref, file.stem().string(), adapted)});
+            for (const std::string& a : adapted) say("note: reference " + a);
+        }
+    }
+
+    Json identity() const {
+        Json refs = Json::array();
+        for (const auto& [name, s] : refs_) refs.push_back({{"name", name}, {"settings", toOrderedJson(s)}});
+        return {{"version", kTuneVersion},
+                {"input", toOrderedJson(input_)},
+                {"objective", opt_.objective},
+                {"budgetMs", opt_.budgetMs ? Json(*opt_.budgetMs) : Json(nullptr)},
+                {"budgetMiB", opt_.budgetMiB ? Json(*opt_.budgetMiB) : Json(nullptr)},
+                {"budgetFrom", refs},
+                {"views", opt_.views},
+                {"holdOutEvery", opt_.holdOutEvery},
+                {"seed", opt_.seed},
+                {"costProfile", metrics::profileName(*opt_.profile)}};
+    }
+
+    // --budget-ms / --budget-mib as given; --budget-from: the cheapest reference's modelled cost
+    // and memory on the input's scene and tuned views.
+    void resolveBudget() {
+        if (opt_.budgetMs) budget_.ms = *opt_.budgetMs;
+        if (opt_.budgetMiB) budget_.bytes = *opt_.budgetMiB * kMiB;
+        for (const auto& [name, s] : refs_) {
+            const Evaluation e = judge(measured(s, "tuned"), {opt_.objective, {}});
+            if (!e.valid) throw std::runtime_error("reference " + name + ": " + e.problem);
+            say("reference " + name + ": " + fixed(e.costMs, 1) + " ms modelled, " + fixed(e.mapBytes / kMiB, 1) + " MiB, " +
+                errorText(opt_.objective, e.error) + " " + sweep::errorFigure(opt_.objective).label);
+            if (!opt_.budgetMs) budget_.ms = std::min(budget_.ms.value_or(e.costMs), e.costMs);
+            if (!opt_.budgetMiB) budget_.bytes = std::min(budget_.bytes.value_or(e.mapBytes), e.mapBytes);
+        }
+        if (!budget_.ms && !budget_.bytes) throw std::runtime_error("give a budget: --budget-ms, --budget-mib or --budget-from");
+        say("budget: " + budgetText(budget_) + " (modelled with " + metrics::profileName(*opt_.profile) + ")");
+    }
+
+    void progress(const SearchProgress& p) {
+        std::string line = "tune [" + std::to_string(p.evaluations + 1) + "/" + std::to_string(p.limit) + "] ";
+        if (p.best) {
+            const Candidate& b = (*p.evaluated)[*p.best];
+            line += "best " + errorText(opt_.objective, b.eval.error) + " at " + fixed(b.eval.costMs, 1) + " ms";
+        } else {
+            line += "nothing within the budget yet";
+        }
+        say(line + "; trying " + p.trying);
+    }
+
+    Json evalJson(const Evaluation& e) const {
+        return {{"error", e.error}, {"costMs", e.costMs}, {"mapBytes", e.mapBytes}, {"constraintsMet", e.constraintsMet},
+                {"violated", e.violated}, {"figures", e.figures}};
+    }
+
+    void writeOutputs(const Candidate& best, double seconds) {
+        const fs::path& dir = opt_.outDir;
+        const Json tuned = sweep::presetInFolder(dir, presetDir_, toOrderedJson(best.settings));
+        writeTextAtomic(dir / "tuned.json", tuned.dump(2) + "\n");
+        loadPreset(dir / "tuned.json");  // never leave a preset that does not load again
+        writeFront(best);
+        const Evaluator judged = [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); };
+        const Evaluation inputEval = judged(input_);
+        const Explanation why = explain(input_, inputEval, best.settings, best.eval, opt_.objective, judged);
+        writeTextAtomic(dir / "explain.json", toJson(why).dump(2) + "\n");
+        writeTextAtomic(dir / "explain.md", toMarkdown(why, "Why " + opt_.preset.stem().string() + " was tuned this way"));
+        for (const Explained& x : why.changes) say("  " + x.line);
+        writeSummary(best, inputEval, seconds);
+    }
+
+    // Every evaluated point (and the input and references) as a sweep's results: the Pareto charts
+    // of modelled cost and memory against the objective, and the front's presets.
+    void writeFront(const Candidate& best) {
+        sweep::Manifest m;
+        m.sweep = "tune " + opt_.preset.stem().string();
+        m.scene = input_.scene;
+        m.presetDir = presetDir_;
+        m.width = input_.output.width;
+        m.height = input_.output.height;
+        m.machine = opt_.machine;
+        m.costProfile = metrics::profileName(*opt_.profile);
+        std::vector<sweep::PointResult> points;
+        auto add = [&](const Settings& s, const Evaluation& e, std::string label, bool reference) {
+            if (!e.valid) return;
+            sweep::PointResult r{settingsId(s), std::move(label), reference, {}, toOrderedJson(s), {}};
+            for (const auto& [key, value] : e.figures.items()) r.figures.push_back({key, value.is_number() ? value.get<double>() : NAN});
+            m.pointIds.push_back(r.id);
+            points.push_back(std::move(r));
+        };
+        add(input_, measured(input_, "tuned"), "input", true);
+        for (const auto& [name, s] : refs_) add(s, measured(s, "tuned"), name, true);
+        for (const Candidate& c : result_.evaluated)
+            if (c.feasible && !(c.settings == input_)) add(c.settings, c.eval, &c == &best ? "tuned" : c.move, false);
+        sweep::writeReport(opt_.outDir / "front", m, points, {opt_.objective, "model"});
+    }
+
+    void writeSummary(const Candidate& best, const Evaluation& inputEval, double seconds) {
+        Json views = Json::array();
+        bool heldOut = false;
+        for (const View& v : views_) {
+            views.push_back({{"name", v.name}, {"heldOut", v.heldOut}});
+            heldOut = heldOut || v.heldOut;
+        }
+        Json s = {{"preset", opt_.preset.string()},
+                  {"objective", opt_.objective},
+                  {"budgetMs", budget_.ms ? Json(*budget_.ms) : Json(nullptr)},
+                  {"budgetBytes", budget_.bytes ? Json(*budget_.bytes) : Json(nullptr)},
+                  {"views", views},
+                  {"evaluations", result_.evaluations},
+                  {"seed", opt_.seed},
+                  {"seconds", seconds},
+                  {"input", {{"tuned", evalJson(inputEval)}}},
+                  {"tuned", {{"tuned", evalJson(best.eval)}}},
+                  {"references", Json::object()}};
+        for (const auto& [name, r] : refs_) s["references"][name] = {{"tuned", evalJson(judge(measured(r, "tuned"), objective_))}};
+        if (heldOut) {
+            const Evaluation in = judge(measured(input_, "held-out"), objective_);
+            const Evaluation tu = judge(measured(best.settings, "held-out"), objective_);
+            s["input"]["heldOut"] = evalJson(in);
+            s["tuned"]["heldOut"] = evalJson(tu);
+            for (const auto& [name, r] : refs_) s["references"][name]["heldOut"] = evalJson(judge(measured(r, "held-out"), objective_));
+            // A tune that only fits the views it saw: on the held-out views it keeps less than half
+            // of the gain it made on the tuned ones, or is worse than the input.
+            const double gainTuned = inputEval.error - best.eval.error, gainHeld = in.error - tu.error;
+            const bool overfit = gainHeld < 0.5 * gainTuned || tu.error > in.error;
+            s["heldOutHolds"] = !overfit;
+            say(std::string(overfit ? "warning: the tune does not hold on the held-out views: " : "held-out views: ") +
+                errorText(opt_.objective, in.error) + " input -> " + errorText(opt_.objective, tu.error) + " tuned");
+        }
+        writeTextAtomic(opt_.outDir / "summary.json", s.dump(2) + "\n");
+    }
+
+    const TuneOptions& opt_;
+    Settings input_;
+    fs::path presetDir_;
+    std::vector<View> views_;
+    std::vector<std::pair<std::string, Settings>> refs_;
+    metrics::MeasureSession session_;
+    std::optional<Journal> journal_;
+    std::optional<ViewEvaluator> evaluator_;
+    Budget budget_;
+    Objective objective_;
+    SearchResult result_;
+    int made_ = 0, resumed_ = 0;
+};
+
+}  // namespace
+
+TuneOutcome runTune(const TuneOptions& opt) {
+    if (!opt.profile) throw std::invalid_argument("tune: no cost profile");
+    return Tuner(opt).run();
+}
+
+}  // namespace st::tune

@@ -1,0 +1,49 @@
+#pragma once
+// One tune, end to end (docs/tuning.md): reads the preset and the budget, checks the budget can be
+// met at all, searches (tune_search.h) with every evaluation journaled so Ctrl-C keeps it and the
+// same command resumes, scores the result on held-out views, explains each change by ablation,
+// and writes tuned.json, front/, explain.json/.md and summary.json. Needs a current GL context.
+#include "metrics/cost_model.h"
+#include "tune/tune_search.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace st::tune {
+
+struct TuneOptions {
+    std::filesystem::path preset;
+    std::filesystem::path outDir;
+    std::optional<double> budgetMs;                  // modelled frame cost
+    std::optional<double> budgetMiB;                 // map memory
+    std::vector<std::filesystem::path> budgetFrom;   // references: the cheapest one's cost and memory
+    std::optional<std::pair<int, int>> size;         // override the preset's output size
+    std::string objective = "soft-filtered";         // a figure table --error choice
+    int views = 4;                                   // the preset's camera and views around it
+    int holdOutEvery = 4;                            // every k-th view after the first is held out
+    std::uint64_t seed = 1;
+    int evaluations = 120;
+    const metrics::CostProfile* profile = nullptr;
+    std::function<bool()> stopRequested;
+    std::function<void(const std::string&)> progress;  // one line per evaluation and stage
+    std::string machine;
+};
+
+struct TuneOutcome {
+    bool stopped = false;      // Ctrl-C: what was measured is kept; the same command resumes
+    bool infeasible = false;   // no settings within the budget (message names the cheapest cost)
+    std::string message;       // the summary line
+    int evaluations = 0;       // made by this run (a resumed run's journal ones are free)
+    int resumed = 0;           // read back from the journal
+};
+
+// Throws SettingsError for a bad preset or reference, std::runtime_error for a folder holding
+// another tune.
+TuneOutcome runTune(const TuneOptions& opt);
+
+}  // namespace st::tune

@@ -1,0 +1,203 @@
+#include "tune/tune_search.h"
+
+#include "renderer/settings/settings_json.h"
+#include "renderer/settings/validation.h"
+
+#include <algorithm>
+#include <map>
+#include <random>
+
+namespace st::tune {
+namespace {
+
+// `s` with d's j-th value, or nothing when the field refuses it.
+std::optional<Settings> tryValue(const Settings& s, const Dimension& d, std::size_t j) {
+    try {
+        return withValue(s, d, j);
+    } catch (const SettingsError&) {
+        return std::nullopt;
+    }
+}
+
+std::string text(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+// Dimensions that trade cost against each other at the budget's edge: one up, another down.
+constexpr const char* kCostDims[] = {"cascades.count", "cascades.mapSize", "cascades.shadowDistance"};
+
+class Walker {
+public:
+    Walker(const Space& space, const Evaluator& evaluate, const SearchOptions& opt)
+        : space_(space), evaluate_(evaluate), opt_(opt), rng_(opt.seed) {}
+
+    // The index of `s` among the evaluated points, evaluating it if new; nullopt once the
+    // evaluations are spent or a stop was requested.
+    std::optional<std::size_t> visit(const Settings& s, const std::string& move) {
+        const std::string key = toOrderedJson(s).dump();
+        if (const auto it = seen_.find(key); it != seen_.end()) return it->second;
+        Candidate c{s, {}, move, false};
+        if (const std::vector<std::string> problems = validate(s); !problems.empty()) {
+            c.eval.valid = false;
+            c.eval.problem = problems.front();
+        } else {
+            if (out_.evaluations >= opt_.evaluations || (opt_.stopRequested && opt_.stopRequested())) {
+                out_.stopped = out_.evaluations < opt_.evaluations;
+                return std::nullopt;
+            }
+            report(move);
+            c.eval = evaluate_(s);
+            ++out_.evaluations;
+            ++fresh_;
+        }
+        c.feasible = c.eval.valid && c.eval.constraintsMet && opt_.budget.fits(c.eval);
+        c.excess = opt_.budget.excess(c.eval);
+        out_.evaluated.push_back(std::move(c));
+        const std::size_t i = out_.evaluated.size() - 1;
+        seen_.emplace(key, i);
+        if (out_.evaluated[i].feasible && (!out_.best || better(out_.evaluated[i], out_.evaluated[*out_.best])))
+            out_.best = i;
+        return i;
+    }
+
+    SearchResult run(const std::vector<Settings>& starts) {
+        std::optional<std::size_t> cur;
+        for (const Settings& s : starts) {
+            const auto i = visit(s, cur ? "analytic start" : "start");
+            if (!i) return finish();
+            if (!cur || better(at(*i), at(*cur))) cur = i;
+        }
+        int idleRestarts = 0;
+        while (cur && idleRestarts < 20) {
+            const int before = fresh_;
+            std::optional<std::size_t> next = descend(*cur);
+            if (!next) return finish();
+            if (*next == *cur) next = pairMove(*cur);
+            if (!next) return finish();
+            if (*next == *cur) {
+                next = restart();
+                if (!next) return finish();
+            }
+            cur = next;
+            idleRestarts = fresh_ == before ? idleRestarts + 1 : 0;
+        }
+        return finish();
+    }
+
+private:
+    const Candidate& at(std::size_t i) const { return out_.evaluated[i]; }
+
+    void report(const std::string& trying) {
+        if (!opt_.progress) return;
+        opt_.progress({out_.evaluations, opt_.evaluations, out_.best, &out_.evaluated, trying});
+    }
+
+    std::string moveText(const Settings& from, const Dimension& d, std::size_t j) const {
+        return d.path + " " + text(currentValue(from, d)) + " -> " + text(d.values[j]);
+    }
+
+    // One round over the dimensions in a seeded order; the first neighbour better than the current
+    // point is taken. Returns the point reached (== cur when nothing was better).
+    std::optional<std::size_t> descend(std::size_t cur) {
+        std::vector<std::size_t> order(space_.dims.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::shuffle(order.begin(), order.end(), rng_);
+        for (std::size_t di : order) {
+            const Dimension& d = space_.dims[di];
+            const Settings base = at(cur).settings;
+            if (!applies(base, d.path)) continue;
+            const long i = long(currentIndex(base, d));
+            for (long delta : {1L, -1L, 2L, -2L}) {
+                const long j = i + delta;
+                if (j < 0 || j >= long(d.values.size())) continue;
+                const std::optional<Settings> s = tryValue(base, d, std::size_t(j));
+                if (!s || *s == base) continue;
+                const auto k = visit(*s, moveText(base, d, std::size_t(j)));
+                if (!k) return std::nullopt;
+                if (better(at(*k), at(cur))) {
+                    cur = *k;
+                    break;
+                }
+            }
+        }
+        return cur;
+    }
+
+    // At the budget's edge no single move helps: one cost dimension up and another down.
+    std::optional<std::size_t> pairMove(std::size_t cur) {
+        for (const char* up : kCostDims) {
+            for (const char* down : kCostDims) {
+                const Dimension* du = space_.find(up);
+                const Dimension* dd = space_.find(down);
+                if (up == down || !du || !dd) continue;
+                const Settings base = at(cur).settings;
+                const std::size_t iu = currentIndex(base, *du), id = currentIndex(base, *dd);
+                if (iu + 1 >= du->values.size() || id == 0) continue;
+                const std::optional<Settings> mid = tryValue(base, *du, iu + 1);
+                const std::optional<Settings> s = mid ? tryValue(*mid, *dd, id - 1) : std::nullopt;
+                if (!s || *s == base) continue;
+                const auto k = visit(*s, moveText(base, *du, iu + 1) + ", " + moveText(*mid, *dd, id - 1));
+                if (!k) return std::nullopt;
+                if (better(at(*k), at(cur))) return k;
+            }
+        }
+        return cur;
+    }
+
+    // A seeded perturbation of the best point (three random moves): the descent goes on from there.
+    std::optional<std::size_t> restart() {
+        const std::size_t from = out_.best ? *out_.best : 0;
+        Settings s = at(from).settings;
+        std::string move = "restart:";
+        for (int n = 0; n < 3; ++n) {
+            const Dimension& d = space_.dims[std::uniform_int_distribution<std::size_t>(0, space_.dims.size() - 1)(rng_)];
+            const std::size_t j = std::uniform_int_distribution<std::size_t>(0, d.values.size() - 1)(rng_);
+            if (const std::optional<Settings> next = tryValue(s, d, j)) {
+                move += " " + moveText(s, d, j);
+                s = *next;
+            }
+        }
+        return visit(s, move);
+    }
+
+    SearchResult finish() { return std::move(out_); }
+
+    const Space& space_;
+    const Evaluator& evaluate_;
+    const SearchOptions& opt_;
+    std::mt19937_64 rng_;
+    std::map<std::string, std::size_t> seen_;
+    SearchResult out_;
+    int fresh_ = 0;  // evaluations made (restarts that found only known points do not count)
+};
+
+}  // namespace
+
+bool Budget::fits(const Evaluation& e) const {
+    return (!ms || e.costMs <= *ms) && (!bytes || e.mapBytes <= *bytes);
+}
+
+double Budget::excess(const Evaluation& e) const {
+    double over = 0.0;
+    if (ms && *ms > 0.0) over += std::max(0.0, e.costMs / *ms - 1.0);
+    if (bytes && *bytes > 0.0) over += std::max(0.0, e.mapBytes / *bytes - 1.0);
+    return over;
+}
+
+bool better(const Candidate& a, const Candidate& b) {
+    if (a.feasible != b.feasible) return a.feasible;
+    if (!a.eval.valid || !b.eval.valid) return a.eval.valid && !b.eval.valid;
+    if (!a.feasible) {
+        // Both over the budget or breaking a constraint: closer to feasible first.
+        if (a.eval.constraintsMet != b.eval.constraintsMet) return a.eval.constraintsMet;
+        if (a.excess != b.excess) return a.excess < b.excess;
+        return a.eval.error < b.eval.error;
+    }
+    if (a.eval.error != b.eval.error) return a.eval.error < b.eval.error;
+    return a.eval.costMs < b.eval.costMs;
+}
+
+SearchResult search(const std::vector<Settings>& starts, const Space& space, const Evaluator& evaluate,
+                    const SearchOptions& opt) {
+    return Walker(space, evaluate, opt).run(starts);
+}
+
+}  // namespace st::tune

@@ -1,0 +1,80 @@
+#pragma once
+// The tuner's search (docs/tuning.md): from the input preset and analytic starting points, a
+// seeded coordinate descent over the space's dimensions under a cost budget, with paired moves
+// that trade one cost for another at the budget's edge, and seeded restarts from perturbations of
+// the best point until the evaluations run out. Not a grid: it walks only where the error falls.
+// Pure code: it calls an Evaluator, so tests give it a known function and no GL.
+#include "renderer/settings/settings.h"
+#include "tune/tune_space.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace st::tune {
+
+struct Evaluation {
+    bool valid = true;         // false: the settings were refused (`problem` says why)
+    std::string problem;
+    double error = 0.0;        // the objective, lower is better (over the tuned views)
+    double costMs = 0.0;       // modelled frame cost
+    double mapBytes = 0.0;     // shadow and filter map memory
+    bool constraintsMet = true;  // the objective's side constraints (artifact classes, flicker)
+    std::string violated;        // which, when not met
+    nlohmann::ordered_json figures;  // every figure, for the report
+};
+using Evaluator = std::function<Evaluation(const Settings&)>;
+
+struct Budget {
+    std::optional<double> ms;     // modelled cost at most this
+    std::optional<double> bytes;  // map memory at most this
+    bool fits(const Evaluation& e) const;
+    // How far over the budget, as a share of it (0 when within): ranks infeasible points.
+    double excess(const Evaluation& e) const;
+};
+
+struct Candidate {
+    Settings settings;
+    Evaluation eval;
+    std::string move;  // how the search got here: "start", "bias.slope 1 -> 0.5", ...
+    bool feasible = false;
+    double excess = 0.0;  // Budget::excess of eval
+};
+
+struct SearchProgress {
+    int evaluations = 0;  // made so far (cached ones are free and not counted)
+    int limit = 0;
+    std::optional<std::size_t> best;  // index into `evaluated` of the best feasible point
+    const std::vector<Candidate>* evaluated = nullptr;
+    std::string trying;   // the move being evaluated
+};
+
+struct SearchOptions {
+    Budget budget;
+    int evaluations = 150;
+    std::uint64_t seed = 1;
+    std::function<bool()> stopRequested;  // checked before each evaluation (Ctrl-C)
+    std::function<void(const SearchProgress&)> progress;
+};
+
+struct SearchResult {
+    std::vector<Candidate> evaluated;  // every distinct point, in the order first evaluated
+    std::optional<std::size_t> best;   // the best feasible, if any
+    int evaluations = 0;
+    bool stopped = false;              // by stopRequested
+};
+
+// a is better than b: feasible before infeasible; among feasible, lower error, then lower cost;
+// among infeasible, less over the budget.
+bool better(const Candidate& a, const Candidate& b);
+
+// Searches from `starts` (the first is the input preset). The evaluator is called at most
+// opt.evaluations times and never twice for equal settings.
+SearchResult search(const std::vector<Settings>& starts, const Space& space, const Evaluator& evaluate,
+                    const SearchOptions& opt);
+
+}  // namespace st::tune

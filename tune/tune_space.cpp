@@ -1,0 +1,123 @@
+#include "tune/tune_space.h"
+
+#include "renderer/settings/field_table.h"
+#include "renderer/settings/settings_json.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace st::tune {
+namespace {
+using Json = nlohmann::json;
+
+const FieldInfo& field(const std::string& path) {
+    const FieldInfo* f = findField(path);
+    if (!f) throw SettingsError("tune: no settings field " + path);
+    return *f;
+}
+
+std::vector<Json> enumValues(const std::string& path) {
+    std::vector<Json> out;
+    for (std::string_view name : field(path).enumNames) out.emplace_back(std::string(name));
+    return out;
+}
+
+template <class T>
+std::vector<Json> list(std::initializer_list<T> values) {
+    return {values.begin(), values.end()};
+}
+
+bool isMoment(FilterKind k) {
+    return k == FilterKind::Vsm || k == FilterKind::Evsm2 || k == FilterKind::Evsm4 || k == FilterKind::Msm;
+}
+}  // namespace
+
+const Dimension* Space::find(const std::string& path) const {
+    for (const Dimension& d : dims)
+        if (d.path == path) return &d;
+    return nullptr;
+}
+
+Space defaultSpace(const Settings& base) {
+    Space s;
+    auto add = [&](std::string path, std::vector<Json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
+    add("cascades.count", list({1, 2, 3, 4, 5, 6}));
+    if (base.cascades.scheme == SplitScheme::Manual) add("cascades.scheme", list<std::string>({"manual", "practical"}));
+    add("cascades.lambda", list({0.3, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 0.98}));
+    // Shadow distance as shares of the far plane: a scene's useful range is not known in metres.
+    std::vector<Json> distances{0.0};
+    for (double share : {0.8, 0.65, 0.5, 0.4, 0.3, 0.22, 0.15, 0.1})
+        distances.emplace_back(std::round(double(base.camera.farPlane) * share * 10.0) / 10.0);
+    add("cascades.shadowDistance", distances);
+    add("cascades.depthBounds", enumValues("cascades.depthBounds"));
+    add("cascades.fit", enumValues("cascades.fit"));
+    add("cascades.zExtension", list<std::string>({"scene-bounds", "pancake", "none"}));
+    add("cascades.stabilize", list({false, true}));
+    add("cascades.mapSize", list({256, 512, 1024, 2048, 4096}));
+    add("cascades.storage", enumValues("cascades.storage"));
+    add("cascades.blendBand", list({0.0, 0.05, 0.1, 0.2}));
+    add("cascades.fadeBand", list({0.0, 0.1, 0.2}));
+    add("filter.kind", enumValues("filter.kind"));
+    add("filter.size", list({3, 5, 7, 9}));
+    add("filter.blurRadius", list({0, 1, 2, 3, 4}));
+    add("filter.pcssMaxRadius", list({2.0, 4.0, 8.0, 12.0, 16.0}));
+    add("bias.constant", list({0.0, 0.0025, 0.005, 0.01, 0.015, 0.02, 0.03, 0.05, 0.08}));
+    add("bias.slope", list({0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0}));
+    add("bias.normalOffset", list({0.0, 0.25, 0.5, 0.75, 1.0, 1.5}));
+    add("bias.receiverPlane", list({false, true}));
+    return s;
+}
+
+Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json& value) {
+    const FieldInfo& f = field(path);
+    f.set(s, readFieldValue(f, value, path));
+    // Manual splits are one per cascade boundary: another count, or a weight, means computed splits.
+    const bool manual = s.cascades.scheme == SplitScheme::Manual;
+    if (manual && (path == "cascades.lambda" || s.cascades.manualSplits.size() != std::size_t(s.cascades.count - 1))) {
+        s.cascades.scheme = SplitScheme::Practical;
+        s.cascades.manualSplits.clear();
+    }
+    return s;
+}
+
+Settings withValue(Settings s, const Dimension& d, std::size_t i) { return withFieldJson(std::move(s), d.path, d.values.at(i)); }
+
+Json currentValue(const Settings& s, const Dimension& d) {
+    const FieldInfo& f = field(d.path);
+    return fieldValueToJson(f, f.get(s));
+}
+
+std::size_t currentIndex(const Settings& s, const Dimension& d) {
+    const Json now = currentValue(s, d);
+    std::size_t best = 0;
+    double bestGap = INFINITY;
+    for (std::size_t i = 0; i < d.values.size(); ++i) {
+        if (d.values[i] == now) return i;
+        if (now.is_number() && d.values[i].is_number()) {
+            const double gap = std::abs(d.values[i].get<double>() - now.get<double>());
+            if (gap < bestGap) bestGap = gap, best = i;
+        }
+    }
+    return best;
+}
+
+bool applies(const Settings& s, const std::string& path) {
+    const FilterKind k = s.filter.kind;
+    if (path == "cascades.lambda") return s.cascades.count > 1 && s.cascades.scheme != SplitScheme::Uniform;
+    if (path == "cascades.blendBand") return s.cascades.count > 1;
+    if (path == "filter.size") return k == FilterKind::PcfNxN || k == FilterKind::Pcss;
+    if (path == "filter.blurRadius") return isMoment(k);
+    if (path == "filter.pcssMaxRadius") return k == FilterKind::Pcss;
+    if (path == "bias.receiverPlane") return !isMoment(k);
+    if (path == "bias.constant" || path == "bias.slope" || path == "bias.normalOffset") return true;
+    return true;
+}
+
+std::vector<Change> changesBetween(const Settings& from, const Settings& to) {
+    std::vector<Change> out;
+    for (const FieldInfo* f : changedFields(from, to))
+        out.push_back({std::string(f->path), fieldValueToJson(*f, f->get(from)), fieldValueToJson(*f, f->get(to))});
+    return out;
+}
+
+}  // namespace st::tune

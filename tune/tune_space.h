@@ -1,0 +1,56 @@
+#pragma once
+// What `shadowtune tune` may change (docs/tuning.md): every setting that changes the shadow
+// result, each as an ordered list of candidate values, so "a neighbour" of a value is the next
+// one up or down the list. Pure settings code, no GL.
+#include "renderer/settings/settings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace st::tune {
+
+// One knob: a field of the settings table (renderer/settings/field_table.h) and its candidates.
+struct Dimension {
+    std::string path;                   // "cascades.lambda"
+    std::vector<nlohmann::json> values;  // in order: neighbours are adjacent
+};
+
+struct Space {
+    std::vector<Dimension> dims;
+    const Dimension* find(const std::string& path) const;
+};
+
+// The default space for tuning `base`: split count, scheme weight, shadow distance (fractions of
+// the base's far plane), depth bounds and sample fit, fit, z-extension, stabilisation, storage,
+// map size, filter kind and its parameters, bias constant, slope, normal offset and
+// receiver-plane, blend and fade bands. Fields that only time-slice work (updateInterval) are
+// left out: the cost model prices a frame with every map redrawn, so they would look free.
+Space defaultSpace(const Settings& base);
+
+// `s` with the field at `path` set to `value` (its JSON form); a manual-split preset whose count
+// or weight changes gets computed (practical) splits. Throws SettingsError for a value the field
+// rejects.
+Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json& value);
+// `s` with dimension `d` set to its i-th value (through the field table, as a sweep's "set" is).
+// Throws SettingsError for a value the field rejects.
+Settings withValue(Settings s, const Dimension& d, std::size_t i);
+// The index of the candidate equal to (or, for numbers, nearest to) `s`'s current value.
+std::size_t currentIndex(const Settings& s, const Dimension& d);
+// `s`'s value of `d` as JSON (the field table's JSON form).
+nlohmann::json currentValue(const Settings& s, const Dimension& d);
+
+// Whether `d` changes what settings `s` render: filter.size only for PCF NxN and PCSS, moment
+// parameters only for moment kinds, manual splits only with the manual scheme, ... A move along a
+// dimension that does not apply is not worth an evaluation.
+bool applies(const Settings& s, const std::string& path);
+
+// Every field whose value differs between `from` and `to`, in the field table's order.
+struct Change {
+    std::string path;
+    nlohmann::json from, to;
+};
+std::vector<Change> changesBetween(const Settings& from, const Settings& to);
+
+}  // namespace st::tune
