@@ -138,7 +138,8 @@ public:
         out.resumed = resumed_;
         out.stopped = result_.stopped;
         if (out.stopped) {
-            out.message = "stopped after " + std::to_string(result_.evaluations) + " evaluations; run the same command to resume";
+            out.message = "stopped with " + std::to_string(journal_->size()) + " evaluations journaled in " +
+                          (opt_.outDir / "evaluations.jsonl").string() + "; run the same command to resume";
             return out;
         }
         if (!result_.best) {

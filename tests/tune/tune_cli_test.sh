@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# `shadowtune tune` from the command line: a budget nothing meets is refused naming the cheapest
+# cost; Ctrl-C keeps the evaluations made and the same command resumes to the same tuned.json as an
+# uninterrupted run (the same seed gives the same result); a folder of another tune is refused; the
+# tuned preset loads, and `measure` of it gives the figures the tune reported.
+#   tune_cli_test.sh SHADOWTUNE SOURCE_DIR WORK_DIR
+set -uo pipefail
+st=$1 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fail=0
+check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
+
+cat >"$work/base.json" <<'JSON'
+{"version": 1, "scene": "builtin:yard", "filter": {"kind": "pcf2x2"}, "cascades": {"count": 2, "mapSize": 512},
+ "output": {"width": 96, "height": 54}}
+JSON
+
+"$st" tune "$work/base.json" --out "$work/none" --evaluations 5 >"$work/nobudget.log" 2>&1
+check "no budget exits 1" "[[ $? -eq 1 ]] && grep -q 'give a budget' '$work/nobudget.log'"
+"$st" tune "$work/base.json" --out "$work/tiny" --budget-ms 0.001 --evaluations 5 >"$work/tiny.log" 2>&1
+check "an infeasible budget exits 1" "[[ $? -eq 1 ]]"
+check "and names the cheapest cost" "grep -q 'no settings fit the budget of 0.0 ms: the cheapest (1 cascade of 256^2, hard filter) models [0-9.]* ms' '$work/tiny.log'"
+check "and writes no tuned preset" "[[ ! -e '$work/tiny/tuned.json' ]]"
+
+seed=7
+args() { echo "$work/base.json --budget-ms $budget --views 2 --hold-out-every 2 --evaluations 24 --seed $seed --size 640x360"; }
+run() { "$st" tune $(args) "$@"; }
+budget=$("$st" measure "$work/base.json" --size 640x360 --out "$work/m0" --frames 1 --no-flicker >/dev/null 2>&1 && jq '.cost.modelMs' "$work/m0/base/metrics.json")
+check "the input's modelled cost is read ($budget ms)" "[[ -n '$budget' && '$budget' != null ]]"
+
+run --out "$work/whole" >"$work/whole.log" 2>&1
+check "a whole tune exits 0" "[[ $? -eq 0 ]] && [[ -s '$work/whole/tuned.json' ]]"
+check "it prints progress with the best so far" "grep -q 'tune \[[0-9]*/24\] best' '$work/whole.log'"
+check "it explains each change" "grep -q 'alone' '$work/whole/explain.md' && jq -e '.changes | length > 0' '$work/whole/explain.json' >/dev/null"
+check "it scores the held-out view" "jq -e '.tuned.heldOut.error != null and (.heldOutHolds | type == \"boolean\")' '$work/whole/summary.json' >/dev/null"
+check "the front is charted" "[[ -s '$work/whole/front/pareto.png' && -s '$work/whole/front/results.csv' ]]"
+
+# Ctrl-C once the third evaluation is under way: the run stops after it, exit 130.
+"$st" tune $(args) --out "$work/cut" >"$work/cut.log" 2>&1 &  # not through run(): the signal must reach shadowtune
+pid=$!
+for _ in $(seq 3000); do grep -q 'tune \[3/24\]' "$work/cut.log" && break; sleep 0.01; done
+kill -INT "$pid"
+wait "$pid"
+code=$?
+made=$(wc -l <"$work/cut/evaluations.jsonl")
+check "Ctrl-C exits 130 (got $code)" "[[ $code -eq 130 ]]"
+check "Ctrl-C keeps the evaluations made ($made)" "[[ $made -ge 3 ]] && [[ ! -e '$work/cut/tuned.json' ]]"
+run --out "$work/cut" >"$work/resume.log" 2>&1
+check "the same command resumes" "[[ $? -eq 0 ]] && grep -q 'resuming: $made evaluations journaled' '$work/resume.log'"
+check "and reaches the uninterrupted run's tuned.json" "cmp -s '$work/whole/tuned.json' '$work/cut/tuned.json'"
+check "the same seed gives the same explanation" "cmp -s '$work/whole/explain.json' '$work/cut/explain.json'"
+
+seed=8 run --out "$work/cut" >"$work/other.log" 2>&1
+check "another tune's folder is refused" "[[ $? -eq 1 ]] && grep -q 'holds another tune' '$work/other.log'"
+
+# The tuned preset's figures are measure's: the same misclassified share and modelled cost on the
+# preset camera (a one-view tune).
+"$st" tune "$work/base.json" --budget-ms "$budget" --views 1 --evaluations 12 --out "$work/one" >/dev/null 2>&1
+"$st" measure "$work/one/tuned.json" --out "$work/m1" --frames 1 --no-flicker >/dev/null 2>&1
+check "measure reads the tuned preset" "[[ -s '$work/m1/tuned/metrics.json' ]]"
+same() { jq -n --argjson a "$1" --argjson b "$2" '($a - $b) | fabs <= 1e-9 * ([$a, $b] | map(fabs) | max) + 1e-12' | grep -q true; }
+mis_t=$(jq '.tuned.tuned.figures["accuracy.misclassified"]' "$work/one/summary.json")
+mis_m=$(jq '.accuracy.misclassified' "$work/m1/tuned/metrics.json")
+cost_t=$(jq '.tuned.tuned.costMs' "$work/one/summary.json")
+cost_m=$(jq '.cost.modelMs' "$work/m1/tuned/metrics.json")
+check "misclassified equals measure's ($mis_t, $mis_m)" "same '$mis_t' '$mis_m'"
+check "modelled cost equals measure's ($cost_t, $cost_m)" "same '$cost_t' '$cost_m'"
+check "within the budget ($cost_t <= $budget)" "jq -n --argjson a '$cost_t' --argjson b '$budget' '\$a <= \$b' | grep -q true"
+exit $fail
