@@ -63,6 +63,10 @@ Evaluation ViewEvaluator::measure(const Settings& s, bool heldOut) {
             return bad;
         }
         ++measurements_;
+        spent_.measurePassMs += m.timings.measurePassMs;
+        spent_.groundTruthMs += m.timings.groundTruthMs;
+        spent_.softTruthMs += m.timings.softTruthMs;
+        spent_.totalMs += m.timings.totalMs;
         for (const auto& [key, value] : sweep::figuresOf(m)) {
             auto [it, added] = sums.try_emplace(key, 0.0, 0);
             if (added) order.push_back(key);

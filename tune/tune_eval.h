@@ -44,6 +44,8 @@ public:
     // The figures alone (not judged), on the tuned or the held-out views (none held out: the tuned ones).
     Evaluation measure(const Settings& s, bool heldOut);
     int measurements() const { return measurements_; }
+    // Wall-clock milliseconds spent per view measurement, summed by stage (MeasureTimings).
+    const metrics::MeasureTimings& spent() const { return spent_; }
 
 private:
     metrics::MeasureSession& session_;
@@ -52,6 +54,7 @@ private:
     const metrics::CostProfile& profile_;
     Objective objective_;
     int measurements_ = 0;
+    metrics::MeasureTimings spent_;
 };
 
 // An evaluation's measured part (validity and figures) <-> JSON, exactly: the tune's journal, read

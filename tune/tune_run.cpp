@@ -1,5 +1,6 @@
 #include "tune/tune_run.h"
 
+#include "metrics/cost.h"
 #include "metrics/figure_table.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
@@ -96,6 +97,12 @@ std::vector<Settings> starts(const Settings& input) {
     return {input, seen, texelBias};
 }
 
+void widenLimits(Objective& o, const std::vector<std::pair<std::string, double>>& more) {
+    for (const auto& [key, limit] : more)
+        for (auto& [k, l] : o.atMost)
+            if (k == key) l = std::max(l, limit);
+}
+
 class Tuner {
 public:
     explicit Tuner(const TuneOptions& opt) : opt_(opt) {}
@@ -124,6 +131,9 @@ public:
         }
         const Evaluation inputRaw = measured(input_, "tuned");
         objective_ = {opt_.objective, artifactLimits(inputRaw.figures)};
+        // The references set the budget; their artifact shares are allowed too, or a reference
+        // would not be a feasible answer at its own budget.
+        for (const auto& [name, r] : refs_) widenLimits(objective_, artifactLimits(measured(r, "tuned").figures));
         SearchOptions so;
         so.budget = budget_;
         so.evaluations = opt_.evaluations;
@@ -166,7 +176,9 @@ private:
     // The journaled measurement of `s` on `views`, or a new one (journaled at once).
     Evaluation measured(const Settings& s, const std::string& views) {
         if (std::optional<Evaluation> e = journal_->find(s, views)) return *e;
+        const auto t0 = std::chrono::steady_clock::now();
         Evaluation e = evaluator_->measure(s, views == "held-out");
+        evalMs_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         journal_->add(s, views, e);
         ++made_;
         return e;
@@ -303,6 +315,17 @@ private:
             say(std::string(overfit ? "warning: the tune does not hold on the held-out views: " : "held-out views: ") +
                 errorText(opt_.objective, in.error) + " input -> " + errorText(opt_.objective, tu.error) + " tuned");
         }
+        const metrics::MeasureTimings& t = evaluator_->spent();
+        const double n = std::max(1, evaluator_->measurements());
+        s["timing"] = {{"evaluationsMeasured", evalMs_.size()},
+                       {"medianMsPerEvaluation", metrics::median(evalMs_)},
+                       {"meanMsPerViewMeasurement", t.totalMs / n},
+                       {"meanRenderAndReadBackMs", t.measurePassMs / n},
+                       {"meanTruthMs", t.groundTruthMs / n},
+                       {"meanSoftTruthMs", t.softTruthMs / n}};
+        say("time: median " + fixed(metrics::median(evalMs_), 0) + " ms per evaluation (" + std::to_string(evalMs_.size()) +
+            " measured; per view " + fixed(t.totalMs / n, 0) + " ms: render and read-back " + fixed(t.measurePassMs / n, 0) +
+            ", truth " + fixed(t.groundTruthMs / n, 0) + ", soft truth " + fixed(t.softTruthMs / n, 0) + ")");
         writeTextAtomic(opt_.outDir / "summary.json", s.dump(2) + "\n");
     }
 
@@ -318,6 +341,7 @@ private:
     Objective objective_;
     SearchResult result_;
     int made_ = 0, resumed_ = 0;
+    std::vector<double> evalMs_;  // wall-clock of each new evaluation
 };
 
 }  // namespace

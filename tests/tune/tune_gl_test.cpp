@@ -1,0 +1,104 @@
+// The tuner on a real frame: its search beats a grid of the same (and of a quarter of the)
+// evaluation count within the same modelled budget, on the yard at a small size; and the
+// evaluation it scores is the figures `measure` reports.
+#include "app/cost_profile_file.h"
+#include "metrics/measure_session.h"
+#include "renderer/context/egl_context.h"
+#include "renderer/gpu/debug_output.h"
+#include "renderer/settings/settings_json.h"
+#include "tune/tune_eval.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace st::tune {
+namespace {
+
+class TuneGLTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        context_ = HeadlessContext::create(true);
+        gpu::enableDebugOutput();
+    }
+    static void TearDownTestSuite() { context_.reset(); }
+    void TearDown() override { EXPECT_EQ(gpu::seriousDebugMessageCount(), 0); }
+    static std::unique_ptr<HeadlessContext> context_;
+};
+std::unique_ptr<HeadlessContext> TuneGLTest::context_;
+
+Settings smallYard() {
+    Settings s = loadPreset(std::filesystem::path(ST_SOURCE_DIR) / "presets/default.json");
+    s.output.width = 96;
+    s.output.height = 54;
+    return s;
+}
+
+// The shipped sweeps' axes (count, map size, fit, split weight): every combination.
+std::vector<Settings> grid(const Settings& base) {
+    std::vector<Settings> out;
+    for (int count : {1, 2, 4})
+        for (int mapSize : {512, 1024, 2048})
+            for (FitMode fit : {FitMode::Cascade, FitMode::Sphere})
+                for (float lambda : {0.5f, 0.8f, 0.95f}) {
+                    Settings s = base;
+                    s.cascades.count = count;
+                    s.cascades.mapSize = mapSize;
+                    s.cascades.fit = fit;
+                    s.cascades.lambda = lambda;
+                    out.push_back(s);
+                }
+    return out;
+}
+
+TEST_F(TuneGLTest, TheSearchBeatsAGridOfTheSameEvaluationCountWithinTheBudget) {
+    const Settings base = smallYard();
+    const metrics::CostProfile profile = app::loadCostProfileOption("");
+    metrics::MeasureSession session;
+    ViewEvaluator evaluate(session, ST_SOURCE_DIR "/presets", tuneViews(base, 1, 0), profile, {"soft-filtered", {}});
+    Budget budget;
+    budget.ms = evaluate(base).costMs;  // as cheap as the input preset
+    double gridBest = INFINITY;
+    const std::vector<Settings> points = grid(base);
+    for (const Settings& s : points) {
+        const Evaluation e = evaluate(s);
+        if (e.valid && budget.fits(e)) gridBest = std::min(gridBest, e.error);
+    }
+    ASSERT_TRUE(std::isfinite(gridBest)) << "some grid point fits the budget";
+    for (const int evaluations : {int(points.size()), int(points.size()) / 4}) {
+        SearchOptions opt;
+        opt.budget = budget;
+        opt.evaluations = evaluations;
+        const SearchResult r = search({base}, defaultSpace(base), evaluate, opt);
+        ASSERT_TRUE(r.best);
+        const Evaluation& best = r.evaluated[*r.best].eval;
+        std::printf("budget %.2f ms: grid of %zu points best %.6f, search of %d evaluations best %.6f at %.2f ms\n",
+                    *budget.ms, points.size(), gridBest, r.evaluations, best.error, best.costMs);
+        EXPECT_LE(best.costMs, *budget.ms);
+        EXPECT_LT(best.error, gridBest) << "with " << evaluations << " evaluations";
+    }
+}
+
+// What the tuner scores is what `measure` reports for the same settings on the same view.
+TEST_F(TuneGLTest, AnEvaluationIsMeasuresFigures) {
+    Settings s = smallYard();
+    s.cascades.count = 3;
+    const metrics::CostProfile profile = app::loadCostProfileOption("");
+    metrics::MeasureSession session;
+    ViewEvaluator evaluate(session, ST_SOURCE_DIR "/presets", tuneViews(s, 1, 0), profile, {"misclassified", {}});
+    const Evaluation e = evaluate(s);
+    metrics::MeasureOptions mo;
+    mo.costFrames = 2;
+    mo.costProfile = &profile;
+    mo.flicker = false;
+    metrics::MeasureSession other;
+    const metrics::PresetMeasurement m = other.measure(s, ST_SOURCE_DIR "/presets", mo);
+    EXPECT_DOUBLE_EQ(e.error, m.accuracy.all.share(m.accuracy.all.misclassified()));
+    ASSERT_TRUE(m.cost && m.cost->model);
+    EXPECT_DOUBLE_EQ(e.costMs, m.cost->model->totalMs) << "counted once = timed frames' counted work";
+    EXPECT_DOUBLE_EQ(e.mapBytes, double(m.cost->shadowMapBytes + m.cost->filterMapBytes));
+}
+
+}  // namespace
+}  // namespace st::tune
