@@ -97,6 +97,13 @@ std::vector<Settings> starts(const Settings& input) {
     return {input, seen, texelBias};
 }
 
+// The first rung of the search's successive halving: half the output size, each side.
+Settings screenSize(Settings s) {
+    s.output.width = std::max(16, s.output.width / 2);
+    s.output.height = std::max(16, s.output.height / 2);
+    return s;
+}
+
 void widenLimits(Objective& o, const std::vector<std::pair<std::string, double>>& more) {
     for (const auto& [key, limit] : more)
         for (auto& [k, l] : o.atMost)
@@ -119,6 +126,7 @@ public:
         resumed_ = int(journal_->size());
         if (resumed_ > 0) say("resuming: " + std::to_string(resumed_) + " evaluations journaled in " + opt_.outDir.string());
         evaluator_.emplace(session_, presetDir_, views_, *opt_.profile, Objective{opt_.objective, {}});
+        screener_.emplace(session_, presetDir_, std::vector<View>{views_.front()}, *opt_.profile, Objective{opt_.objective, {}});
         resolveBudget();
         TuneOutcome out;
         const Evaluation cheap = measured(cheapest(input_), "tuned");
@@ -140,6 +148,7 @@ public:
         so.seed = opt_.seed;
         so.stopRequested = opt_.stopRequested;
         so.progress = [this](const SearchProgress& p) { progress(p); };
+        so.screen = [this](const Settings& s) { return judge(measured(screenSize(s), "screen"), objective_); };
         const Space space = defaultSpace(input_);
         std::vector<Settings> from = starts(input_);
         for (const auto& [name, r] : refs_) from.push_back(r);  // a reference's method is within budget by definition
@@ -177,7 +186,7 @@ private:
     Evaluation measured(const Settings& s, const std::string& views) {
         if (std::optional<Evaluation> e = journal_->find(s, views)) return *e;
         const auto t0 = std::chrono::steady_clock::now();
-        Evaluation e = evaluator_->measure(s, views == "held-out");
+        Evaluation e = views == "screen" ? screener_->measure(s, false) : evaluator_->measure(s, views == "held-out");
         evalMs_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         journal_->add(s, views, e);
         ++made_;
@@ -227,6 +236,7 @@ private:
 
     void progress(const SearchProgress& p) {
         std::string line = "tune [" + std::to_string(p.evaluations + 1) + "/" + std::to_string(p.limit) + "] ";
+        if (p.screenings) line += "(" + std::to_string(p.screenings) + " screened) ";
         if (p.best) {
             const Candidate& b = (*p.evaluated)[*p.best];
             line += "best " + errorText(opt_.objective, b.eval.error) + " at " + fixed(b.eval.costMs, 1) + " ms";
@@ -295,6 +305,8 @@ private:
                   {"budgetBytes", budget_.bytes ? Json(*budget_.bytes) : Json(nullptr)},
                   {"views", views},
                   {"evaluations", result_.evaluations},
+                  {"search", {{"evaluations", result_.evaluations}, {"evaluationsToBest", result_.evaluationsToBest},
+                              {"screenings", result_.screenings}, {"screenedOut", result_.screenedOut}}},
                   {"seed", opt_.seed},
                   {"seconds", seconds},
                   {"input", {{"tuned", evalJson(inputEval)}}},
@@ -337,6 +349,7 @@ private:
     metrics::MeasureSession session_;
     std::optional<Journal> journal_;
     std::optional<ViewEvaluator> evaluator_;
+    std::optional<ViewEvaluator> screener_;  // the first rung: the preset camera at half size
     Budget budget_;
     Objective objective_;
     SearchResult result_;

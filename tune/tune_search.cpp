@@ -53,9 +53,35 @@ public:
         out_.evaluated.push_back(std::move(c));
         const std::size_t i = out_.evaluated.size() - 1;
         seen_.emplace(key, i);
-        if (out_.evaluated[i].feasible && (!out_.best || better(out_.evaluated[i], out_.evaluated[*out_.best])))
+        if (out_.evaluated[i].feasible && (!out_.best || better(out_.evaluated[i], out_.evaluated[*out_.best]))) {
             out_.best = i;
+            out_.evaluationsToBest = out_.evaluations;
+        }
         return i;
+    }
+
+    // Whether `s` is worth a full evaluation from the point `cur`: without a screen, or outside
+    // the budget (where cost, not error, decides), always; else when it screens better than `cur`.
+    // nullopt once the screenings are spent (then everything goes to full evaluation).
+    bool worthEvaluating(const Settings& s, std::size_t cur) {
+        if (!opt_.screen || !at(cur).feasible) return true;
+        if (out_.screenings >= kScreensPerEvaluation * opt_.evaluations) return true;
+        const std::optional<double> mine = screened(s), theirs = screened(at(cur).settings);
+        if (!mine || !theirs) return true;
+        if (*mine < *theirs) return true;
+        ++out_.screenedOut;
+        return false;
+    }
+
+    std::optional<double> screened(const Settings& s) {
+        const std::string key = toOrderedJson(s).dump();
+        if (const auto it = screens_.find(key); it != screens_.end()) return it->second;
+        if (!validate(s).empty()) return std::nullopt;
+        const Evaluation e = opt_.screen(s);
+        ++out_.screenings;
+        const std::optional<double> error = e.valid ? std::optional<double>(e.error) : std::nullopt;
+        screens_.emplace(key, error);
+        return error;
     }
 
     SearchResult run(const std::vector<Settings>& starts) {
@@ -84,10 +110,11 @@ public:
 
 private:
     const Candidate& at(std::size_t i) const { return out_.evaluated[i]; }
+    bool seen(const Settings& s) const { return seen_.count(toOrderedJson(s).dump()) != 0; }
 
     void report(const std::string& trying) {
         if (!opt_.progress) return;
-        opt_.progress({out_.evaluations, opt_.evaluations, out_.best, &out_.evaluated, trying});
+        opt_.progress({out_.evaluations, opt_.evaluations, out_.best, &out_.evaluated, trying, out_.screenings});
     }
 
     std::string moveText(const Settings& from, const Dimension& d, std::size_t j) const {
@@ -109,7 +136,7 @@ private:
                 const long j = i + delta;
                 if (j < 0 || j >= long(d.values.size())) continue;
                 const std::optional<Settings> s = tryValue(base, d, std::size_t(j));
-                if (!s || *s == base) continue;
+                if (!s || *s == base || (!seen(*s) && !worthEvaluating(*s, cur))) continue;
                 const auto k = visit(*s, moveText(base, d, std::size_t(j)));
                 if (!k) return std::nullopt;
                 if (better(at(*k), at(cur))) {
@@ -133,7 +160,7 @@ private:
                 if (iu + 1 >= du->values.size() || id == 0) continue;
                 const std::optional<Settings> mid = tryValue(base, *du, iu + 1);
                 const std::optional<Settings> s = mid ? tryValue(*mid, *dd, id - 1) : std::nullopt;
-                if (!s || *s == base) continue;
+                if (!s || *s == base || (!seen(*s) && !worthEvaluating(*s, cur))) continue;
                 const auto k = visit(*s, moveText(base, *du, iu + 1) + ", " + moveText(*mid, *dd, id - 1));
                 if (!k) return std::nullopt;
                 if (better(at(*k), at(cur))) return k;
@@ -165,6 +192,7 @@ private:
     const SearchOptions& opt_;
     std::mt19937_64 rng_;
     std::map<std::string, std::size_t> seen_;
+    std::map<std::string, std::optional<double>> screens_;  // settings -> screened error (none: invalid)
     SearchResult out_;
     int fresh_ = 0;  // evaluations made (restarts that found only known points do not count)
 };

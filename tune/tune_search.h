@@ -51,20 +51,31 @@ struct SearchProgress {
     std::optional<std::size_t> best;  // index into `evaluated` of the best feasible point
     const std::vector<Candidate>* evaluated = nullptr;
     std::string trying;   // the move being evaluated
+    int screenings = 0;   // first-rung scores so far
 };
 
 struct SearchOptions {
     Budget budget;
     int evaluations = 150;
+    // Successive halving, two rungs: when set, a neighbour of a point within the budget is first
+    // scored by this cheaper evaluator (one view, reduced resolution) and only evaluated in full
+    // when it beats the current point there too. Screenings do not count against `evaluations`
+    // (at most kScreensPerEvaluation times as many are made).
+    Evaluator screen;
     std::uint64_t seed = 1;
     std::function<bool()> stopRequested;  // checked before each evaluation (Ctrl-C)
     std::function<void(const SearchProgress&)> progress;
 };
 
+inline constexpr int kScreensPerEvaluation = 6;
+
 struct SearchResult {
     std::vector<Candidate> evaluated;  // every distinct point, in the order first evaluated
     std::optional<std::size_t> best;   // the best feasible, if any
     int evaluations = 0;
+    int screenings = 0;                // cheap first-rung scores (SearchOptions::screen)
+    int screenedOut = 0;               // of them, candidates not worth a full evaluation
+    int evaluationsToBest = 0;         // full evaluations made when the best point was found
     bool stopped = false;              // by stopRequested
 };
 

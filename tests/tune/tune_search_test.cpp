@@ -114,6 +114,27 @@ TEST(TuneSearchTest, AStartOverTheBudgetWalksBackIntoIt) {
     EXPECT_FALSE(r.evaluated.front().feasible);
 }
 
+// Successive halving: a screen that agrees with the full score lets the search skip full
+// evaluations of the neighbours that are no better, and it still reaches the best point.
+TEST(TuneSearchTest, AScreenSkipsFullEvaluationsOfWorseNeighbours) {
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 300;
+    const SearchResult plain = search({Settings{}}, space, bowl, opt);
+    int screened = 0;
+    opt.screen = [&](const Settings& s) {
+        ++screened;
+        return bowl(s);
+    };
+    const SearchResult halving = search({Settings{}}, space, bowl, opt);
+    ASSERT_TRUE(plain.best && halving.best);
+    EXPECT_DOUBLE_EQ(halving.evaluated[*halving.best].eval.error, plain.evaluated[*plain.best].eval.error);
+    EXPECT_GT(halving.screenedOut, 0);
+    EXPECT_EQ(halving.screenings, screened);
+    EXPECT_LT(halving.evaluationsToBest, plain.evaluationsToBest) << "the screened-out neighbours were not evaluated";
+}
+
 TEST(TuneSearchTest, StopsWhenAskedAndSaysSo) {
     int calls = 0;
     SearchOptions opt;
