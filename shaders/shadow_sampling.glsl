@@ -234,8 +234,23 @@ float penumbraTexels(int i, float z, float zb) {
 
 // PCSS (Fernando 2005, "Percentage-Closer Soft Shadows"): the mean depth of the blockers found in a
 // blockerTaps^2 grid over the widest penumbra possible here (a blocker at the box's sun side),
-// then filterSize^2 PCF taps with the preset's weights spread over the estimated penumbra. Both
-// radii are capped at pcssMaxRadius texels; a point sun (sunTan 0) leaves the 2x2 comparison.
+// then filterSize^2 PCF taps with the preset's weights spread over the estimated penumbra, the
+// paper's w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker, which for a directional
+// light is (d_receiver - d_blocker) * tan(sun's angular diameter) in metres (penumbraTexels).
+// Each tap is a bilinear compare whose own ramp spans one texel, so the taps span the penumbra
+// less that texel: the filtered ramp then spans the estimated penumbra, as the disc's does.
+// Both radii are capped at pcssMaxRadius texels (a cost bound: the cap, not the sun, sets the
+// width where the penumbra is wider); a point sun (sunTan 0) leaves the 2x2 comparison.
+//
+// Its taps reach up to pcssMaxRadius texels from the receiver, where a constant and slope bias
+// sized for one texel no longer covers a receiver tilted to the light (measured: a 32-texel kernel
+// on ground at 55 deg to the sun shadowed 2 % of the lit ground beside the penumbra as acne, and
+// the blocker search took that ground for blockers). So the search and the kernel compare each tap
+// at the receiver's plane (seed 004's receiver-plane depth) whatever bias.receiverPlane says;
+// with it off, one hardware bilinear compare per tap (the cost the cost model counts), with it on,
+// each texel at its own centre (bilinearTap) as the other filters do.
+float pcssTapDepth(vec2 tap, vec2 uv, float z, vec2 dzduv) { return z + dot(tap - uv, dzduv); }
+
 float pcss(int i, vec2 uv, float z, vec2 dzduv) {
     vec2 texel = cascade[i].uvPerTexel.xy;
     float searchRadius = clamp(0.5 * penumbraTexels(i, z, 0.0), 1.0, pcssMaxRadius);
@@ -246,20 +261,21 @@ float pcss(int i, vec2 uv, float z, vec2 dzduv) {
         for (int x = -n; x <= n; ++x) {
             vec2 tap = uv + vec2(x, y) * (searchRadius / float(n)) * texel;
             float d = textureLod(uShadowRaw, vec3(tapUv(i, tap), float(cascade[i].layer)), 0.0).r;
-            if (d < tapDepth(tap, uv, z, dzduv)) {
+            if (d < pcssTapDepth(tap, uv, z, dzduv)) {
                 blockers += d;
                 count += 1.0;
             }
         }
     if (count == 0.0) return 1.0;
-    float radius = min(0.5 * penumbraTexels(i, z, blockers / count), pcssMaxRadius);
+    float radius = clamp(0.5 * (penumbraTexels(i, z, blockers / count) - 1.0), 0.0, pcssMaxRadius);
     int r = filterSize / 2;
     float sum = 0.0;
     for (int y = -r; y <= r; ++y)
         for (int x = -r; x <= r; ++x) {
             vec2 tap = uv + vec2(x, y) * (radius / float(r)) * texel;
             float w = pcfWeights[(x + r) / 4][(x + r) % 4] * pcfWeights[(y + r) / 4][(y + r) % 4];
-            sum += w * bilinearTap(i, tap, uv, z, dzduv);
+            sum += w * (receiverPlane != 0 ? bilinearTap(i, tap, uv, z, dzduv)
+                                           : compareLinear(i, tap, pcssTapDepth(tap, uv, z, dzduv)));
         }
     return sum;
 }
@@ -267,7 +283,8 @@ float pcss(int i, vec2 uv, float z, vec2 dzduv) {
 float sampleCascade(int i, vec3 ts, vec3 wsDx, vec3 wsDy, float tanTheta) {
     float z = biasedDepth(i, ts.z, tanTheta);
     if (filterKind >= ST_FILTER_VSM && filterKind <= ST_FILTER_MSM) return momentShadow(i, ts.xy, z, wsDx, wsDy);
-    vec2 dzduv = receiverPlane != 0 ? receiverPlaneSlope(i, wsDx, wsDy) : vec2(0.0);
+    bool plane = receiverPlane != 0 || filterKind == ST_FILTER_PCSS;  // PCSS: see pcss()
+    vec2 dzduv = plane ? receiverPlaneSlope(i, wsDx, wsDy) : vec2(0.0);
     if (filterKind == ST_FILTER_HARD) return hardTap(i, ts.xy, z, dzduv);
     if (filterKind == ST_FILTER_PCF2X2) return pcf2x2(i, ts.xy, z, dzduv);
     if (filterKind == ST_FILTER_PCSS) return pcss(i, ts.xy, z, dzduv);

@@ -212,7 +212,7 @@ struct FilterSettings {
     float momentBias = 3e-5f;     // MSM: share the moments are pulled toward 0.5
     // PCSS (filter.size taps per side spread over the estimated penumbra):
     int blockerTaps = 5;          // taps per side of the blocker search, odd
-    float pcssMaxRadius = 8.0f;   // texels: cap of the search and kernel radius
+    float pcssMaxRadius = 32.0f;  // texels: cap of the search and kernel radius (see shadow_sampling.glsl)
     // Seed 001's screen-space path (any kind above makes the mask it blurs):
     ScreenSpace screenSpace = ScreenSpace::Off;
     int screenDownsample = 2;     // the mask is blurred at 1/N of the output size: 1, 2 (seed 001) or 4

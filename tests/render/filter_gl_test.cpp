@@ -177,7 +177,10 @@ TEST_F(FilterGLTest, EveryFilterRendersEveryShippedPreset) {
 }
 
 // PCSS's penumbra comes from the sun's disc: wider with the angular diameter, and with a point
-// sun no wider than the 2x2 comparison's.
+// sun no wider than the 2x2 comparison's. PCSS's taps span the penumbra less the bilinear texel
+// (shadow_sampling.glsl), so a disc whose penumbra is about a texel draws the 2x2 ramp: with one
+// 512 map over this view (texels of 0.16 m) that is a 2 deg sun (0.17 m from the box's top across
+// the light), hence the smallest disc here is 5 deg.
 TEST_F(FilterGLTest, PcssPenumbraGrowsWithTheSunsAngularDiameter) {
     Scene scene = makeBuiltinScene("box-over-plane");
     Renderer r(scene);
@@ -193,7 +196,7 @@ TEST_F(FilterGLTest, PcssPenumbraGrowsWithTheSunsAngularDiameter) {
         s.light.angularDiameter = degrees;
         return penumbraPixels(test::renderImage(r, s));
     };
-    const int point = penumbra(0.0f), small = penumbra(2.0f), mid = penumbra(5.0f), wide = penumbra(10.0f);
+    const int point = penumbra(0.0f), small = penumbra(5.0f), mid = penumbra(10.0f), wide = penumbra(20.0f);
     Settings hard = s;
     hard.filter.kind = FilterKind::Pcf2x2;
     const int pcf = penumbraPixels(test::renderImage(r, hard));
