@@ -101,6 +101,9 @@ public:
             if (*next == *cur) {
                 next = restart();
                 if (!next) return finish();
+                // A restart outside the budget would spend a descent walking back (every step a full
+                // evaluation: cost, not error, decides there); try another from the best instead.
+                if (!at(*next).feasible && out_.best) next = out_.best;
             }
             cur = next;
             idleRestarts = fresh_ == before ? idleRestarts + 1 : 0;
