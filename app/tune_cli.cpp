@@ -44,6 +44,8 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--evaluations", opt->evaluations, "Evaluations the search may make")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
+    cmd->add_option("--stop-after", opt->stopAfter, "Make at most N new evaluations, then stop as Ctrl-C would")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--profile", opt->costProfile,
                     "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");

@@ -76,6 +76,7 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.holdOutEvery = opt.holdOutEvery;
         to.seed = opt.seed;
         to.evaluations = opt.evaluations;
+        to.stopAfter = opt.stopAfter;
         to.profile = &profile;
         to.machine = deviceRendererName() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
         ProgressLine progress;

@@ -20,6 +20,7 @@ struct TuneCommandOptions {
     int holdOutEvery = 4;
     std::uint64_t seed = 1;
     int evaluations = 120;
+    long stopAfter = -1;
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile
     bool debugGl = false;

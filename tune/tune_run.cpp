@@ -146,7 +146,9 @@ public:
         so.budget = budget_;
         so.evaluations = opt_.evaluations;
         so.seed = opt_.seed;
-        so.stopRequested = opt_.stopRequested;
+        so.stopRequested = [this] {
+            return (opt_.stopRequested && opt_.stopRequested()) || (opt_.stopAfter >= 0 && made_ >= opt_.stopAfter);
+        };
         so.progress = [this](const SearchProgress& p) { progress(p); };
         so.screen = [this](const Settings& s) { return judge(measured(screenSize(s), "screen"), objective_); };
         const Space space = defaultSpace(input_);

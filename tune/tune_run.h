@@ -30,6 +30,7 @@ struct TuneOptions {
     int evaluations = 120;
     const metrics::CostProfile* profile = nullptr;
     std::function<bool()> stopRequested;
+    long stopAfter = -1;  // make at most this many new evaluations, then stop as Ctrl-C would
     std::function<void(const std::string&)> progress;  // one line per evaluation and stage
     std::string machine;
 };

@@ -77,6 +77,7 @@ public:
         const std::string key = toOrderedJson(s).dump();
         if (const auto it = screens_.find(key); it != screens_.end()) return it->second;
         if (!validate(s).empty()) return std::nullopt;
+        if (opt_.stopRequested && opt_.stopRequested()) return std::nullopt;  // visit() stops the search next
         const Evaluation e = opt_.screen(s);
         ++out_.screenings;
         const std::optional<double> error = e.valid ? std::optional<double>(e.error) : std::nullopt;

@@ -23,9 +23,9 @@ check "and names the cheapest cost" "grep -q 'no settings fit the budget of 0.0 
 check "and writes no tuned preset" "[[ ! -e '$work/tiny/tuned.json' ]]"
 
 seed=7
-args() { echo "$work/base.json --budget-ms $budget --views 2 --hold-out-every 2 --evaluations 24 --seed $seed --size 640x360"; }
+args() { echo "$work/base.json --budget-ms $budget --views 2 --hold-out-every 2 --evaluations 24 --seed $seed --size 160x90"; }
 run() { "$st" tune $(args) "$@"; }
-budget=$("$st" measure "$work/base.json" --size 640x360 --out "$work/m0" --frames 1 --no-flicker >/dev/null 2>&1 && jq '.cost.modelMs' "$work/m0/base/metrics.json")
+budget=$("$st" measure "$work/base.json" --size 160x90 --out "$work/m0" --frames 1 --no-flicker >/dev/null 2>&1 && jq '.cost.modelMs' "$work/m0/base/metrics.json")
 check "the input's modelled cost is read ($budget ms)" "[[ -n '$budget' && '$budget' != null ]]"
 
 run --out "$work/whole" >"$work/whole.log" 2>&1
@@ -35,20 +35,25 @@ check "it explains each change" "grep -q 'alone' '$work/whole/explain.md' && jq 
 check "it scores the held-out view" "jq -e '.tuned.heldOut.error != null and (.heldOutHolds | type == \"boolean\")' '$work/whole/summary.json' >/dev/null"
 check "the front is charted" "[[ -s '$work/whole/front/pareto.png' && -s '$work/whole/front/results.csv' ]]"
 
-# Ctrl-C once the third evaluation is under way: the run stops after it, exit 130.
-"$st" tune $(args) --out "$work/cut" >"$work/cut.log" 2>&1 &  # not through run(): the signal must reach shadowtune
-pid=$!
-for _ in $(seq 3000); do grep -q 'tune \[3/24\]' "$work/cut.log" && break; sleep 0.01; done
-kill -INT "$pid"
-wait "$pid"
-code=$?
+# Stopped after 9 new evaluations (as Ctrl-C stops): the evaluations are kept, and the same command
+# resumes to the uninterrupted run's result.
+run --out "$work/cut" --stop-after 9 >"$work/cut.log" 2>&1
 made=$(wc -l <"$work/cut/evaluations.jsonl")
-check "Ctrl-C exits 130 (got $code)" "[[ $code -eq 130 ]]"
-check "Ctrl-C keeps the evaluations made ($made)" "[[ $made -ge 3 ]] && [[ ! -e '$work/cut/tuned.json' ]]"
+check "a stopped tune keeps the evaluations made ($made)" "[[ $made -eq 9 ]] && [[ ! -e '$work/cut/tuned.json' ]]"
 run --out "$work/cut" >"$work/resume.log" 2>&1
 check "the same command resumes" "[[ $? -eq 0 ]] && grep -q 'resuming: $made evaluations journaled' '$work/resume.log'"
 check "and reaches the uninterrupted run's tuned.json" "cmp -s '$work/whole/tuned.json' '$work/cut/tuned.json'"
 check "the same seed gives the same explanation" "cmp -s '$work/whole/explain.json' '$work/cut/explain.json'"
+
+# Ctrl-C once the third evaluation is under way: the run stops after it, exit 130, and keeps them.
+"$st" tune "$work/base.json" --budget-ms 1000 --size 640x360 --evaluations 500 --out "$work/int" >"$work/int.log" 2>&1 &
+pid=$!  # not through run(): the signal must reach shadowtune
+for _ in $(seq 3000); do grep -q 'tune \[3/500\]' "$work/int.log" && break; sleep 0.01; done
+kill -INT "$pid"
+wait "$pid"
+code=$?
+check "Ctrl-C exits 130 (got $code)" "[[ $code -eq 130 ]]"
+check "Ctrl-C keeps the evaluations made" "[[ \$(wc -l <'$work/int/evaluations.jsonl') -ge 3 ]] && grep -q 'run the same command to resume' '$work/int.log'"
 
 seed=8 run --out "$work/cut" >"$work/other.log" 2>&1
 check "another tune's folder is refused" "[[ $? -eq 1 ]] && grep -q 'holds another tune' '$work/other.log'"
