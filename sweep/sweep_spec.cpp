@@ -1,5 +1,6 @@
 #include "sweep/sweep_spec.h"
 
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
 
@@ -36,7 +37,7 @@ void checkTopKeys(const Json& root, Problems& p) {
 
 fs::path relativeTo(const fs::path& sweepFile, const std::string& path) {
     const fs::path p(path);
-    return p.is_absolute() ? p : sweepFile.parent_path() / p;
+    return p.is_absolute() ? p : folderOf(sweepFile) / p;
 }
 
 std::optional<Settings> readPreset(const fs::path& file, const std::string& jsonPath, Problems& p) {
@@ -241,7 +242,7 @@ SweepSpec loadSweep(const fs::path& file) {
     auto base = readPreset(baseFile, "base", p);
     if (!base) throw SettingsError(p.list);
     spec.base = *base;
-    spec.presetDir = baseFile.parent_path();
+    spec.presetDir = folderOf(baseFile);
     readSet(root, spec.base, p);
     readAxes(root, spec, p);
     readReferences(root, spec, p);
