@@ -1,6 +1,7 @@
 #include "app/calibration_set.h"
 
 #include "renderer/settings/field_table.h"
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
 #include "sweep/sweep_spec.h"
@@ -75,7 +76,7 @@ CalibrationPoint point(const fs::path& presetDir, const fs::path& relative, cons
     }
     if (const auto problems = validate(s); !problems.empty())
         throw SettingsError(file.string() + ": calibration variant" + labelOf(set) + ": " + problems.front());
-    return {file.stem().string() + labelOf(set), s, file.parent_path()};
+    return {file.stem().string() + labelOf(set), s, folderOf(file)};
 }
 
 std::vector<fs::path> presetsIn(const fs::path& dir, const fs::path& sub) {

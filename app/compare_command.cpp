@@ -10,6 +10,7 @@
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
 #include "renderer/image/image_io.h"
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
 
@@ -42,8 +43,8 @@ void checkMerged(const Side& b, const Side& a) {
 
 // Both presets, read and made comparable: one output size and the shaded view.
 std::pair<Side, Side> loadSides(const CompareOptions& opt) {
-    Side a{"A", opt.a.stem().string(), opt.a, opt.a.parent_path(), loadPreset(opt.a)};
-    Side b{"B", opt.b.stem().string(), opt.b, opt.b.parent_path(), loadPreset(opt.b)};
+    Side a{"A", opt.a.stem().string(), opt.a, folderOf(opt.a), loadPreset(opt.a)};
+    Side b{"B", opt.b.stem().string(), opt.b, folderOf(opt.b), loadPreset(opt.b)};
     if (!opt.keepBScene) {
         b.settings = methodOnView(b.settings, a.settings);
         b.dir = a.dir;

@@ -53,7 +53,7 @@ void EditorSession::scanPresets() {
 
 EditorSession::~EditorSession() { saveLayoutPrefs(window_.configDir() / "layout.json", ui_->layoutPrefs()); }
 
-fs::path EditorSession::sceneBase() const { return presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path(); }
+fs::path EditorSession::sceneBase() const { return presetPath_.empty() ? opt_.presetDir : folderOf(presetPath_); }
 
 void EditorSession::loadScene(const std::string& spec, const SceneOptions& options) {
     try {
@@ -152,7 +152,7 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     divider_ = r.abDivider;
     if (!split_) abStats_.reset();
     if (r.sweepCancel) sweep_->cancel();
-    if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : presetPath_.parent_path());
+    if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : folderOf(presetPath_));
 }
 
 // A's ground truth is read back here, while the renderer holds A's maps (the live frame comes

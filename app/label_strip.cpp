@@ -1,5 +1,7 @@
 #include "app/label_strip.h"
 
+#include "report/chart_fonts.h"
+
 #include <cairo.h>
 #include <fontconfig/fontconfig.h>
 
@@ -31,11 +33,12 @@ struct Metrics {
 };
 
 void selectFont(cairo_t* cr, double px, bool bold) {
-    cairo_select_font_face(cr, "sans", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_select_font_face(cr, report::kSansFamily, CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, px);
 }
 
 Metrics metricsFor(cairo_t* cr, int width) {
+    report::warnAboutMissingChartFonts();
     Metrics m;
     m.font = stripFontPx(width);
     selectFont(cr, m.font, false);

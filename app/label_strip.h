@@ -1,6 +1,7 @@
 #pragma once
-// Label strips drawn with cairo onto RGBA8 images: white sans text (and colour swatches) on a
-// dark band, wrapped to the band's width. The text size follows the image width. No GL.
+// Label strips drawn with cairo onto RGBA8 images: white text in DejaVu Sans (report/chart_fonts.h)
+// and colour swatches on a dark band, wrapped to the band's width. The text size follows the
+// image width. No GL.
 #include "renderer/image/image_io.h"
 
 #include <array>

@@ -1,8 +1,10 @@
 // shadowtune: entry point. Each command lives in its own file and registers itself here.
 #include "app/commands.h"
 #include "app/version.h"
+#include "report/chart_fonts.h"
 
 int main(int argc, char** argv) {
+    st::report::nameChartFonts();  // sets the environment: before any thread starts
     CLI::App cli{"shadowtune: tune cascaded shadow maps"};
     cli.require_subcommand(1);
     cli.set_version_flag("--version", st::app::versionText(), "Print the version and git commit, then exit");

@@ -10,6 +10,7 @@
 #include "metrics/metric_images.h"
 #include "metrics/metrics_json.h"
 #include "renderer/image/image_io.h"
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "report/charts.h"
 
@@ -128,7 +129,7 @@ PresetWriter measureOne(const MeasureCommandOptions& opt, const metrics::CostPro
         std::printf("  %s: %s\n", name.c_str(), line.c_str());
         std::fflush(stdout);
     };
-    auto m = std::make_shared<const metrics::PresetMeasurement>(session.measure(s, preset.parent_path(), mo));
+    auto m = std::make_shared<const metrics::PresetMeasurement>(session.measure(s, folderOf(preset), mo));
     for (const std::string& w : m->warnings) std::fprintf(stderr, "%s: warning: %s\n", preset.string().c_str(), w.c_str());
     return [m, name, dir = opt.outDir / name, chartDrawn] {
         writeOutputs(*m, name, dir, *chartDrawn);

@@ -12,6 +12,7 @@
 #include "renderer/render/scene_cache.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/enum_names.h"
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 
 #include <algorithm>
@@ -100,7 +101,7 @@ PresetWriter renderOne(const RenderOptions& opt, const metrics::CostProfile& pro
     if (opt.width) s.output.width = *opt.width;
     if (opt.height) s.output.height = *opt.height;
     checkDeviceLimits(s, preset);
-    Renderer& r = cache.rendererFor(s, preset.parent_path());
+    Renderer& r = cache.rendererFor(s, folderOf(preset));
     FrameStats stats = timedFrames(r, s, opt.frames, preset);
     const metrics::ModelledCost model = metrics::modelFrame(profile, stats.work);  // every map was redrawn
     stats.modelMs = model.totalMs;

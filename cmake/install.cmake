@@ -41,7 +41,8 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libegl-mesa0, libgl1-mesa-dri")
+# The charts' and labels' fonts (report/chart_fonts.h) are named, not linked: no shlibdeps finds them.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libegl-mesa0, libgl1-mesa-dri, fonts-dejavu-core")
 # find_package(shadowtune) needs GLM's headers and CMake package.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libglm-dev")
 # The editor under X11 draws through GLX; with Mesa that is libglx-mesa0.

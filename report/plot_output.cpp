@@ -1,5 +1,6 @@
 #include "report/plot_output.h"
 
+#include "report/chart_fonts.h"
 #include "report/palette.h"
 
 #include <plplot.h>
@@ -12,6 +13,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
+#include <tuple>
 #include <unistd.h>
 
 namespace st::report::detail {
@@ -76,9 +78,10 @@ void replaceAll(std::string& text, const std::string& from, const std::string& t
         text.replace(at, from.size(), to);
 }
 
-// Two fixes to PLplot 5.15's svg driver: it names the monospace family "mono-space", which no
-// viewer knows (the front table's columns would not line up), and sizes the page in points, so
-// viewers showed it 4/3 larger than the PNG.
+// Two fixes to PLplot 5.15's svg driver: it names generic families only (chart_fonts.h: these vary
+// between machines), the monospace one as "mono-space", which no viewer knows (the front table's
+// columns would not line up); and it sizes the page in points, so viewers showed it 4/3 larger
+// than the PNG. The families become the PNG's, with the generic one as the viewer's fallback.
 bool fixSvg(const fs::path& tmp, int widthPx, int heightPx) {
     std::string text;
     {
@@ -86,7 +89,11 @@ bool fixSvg(const fs::path& tmp, int widthPx, int heightPx) {
         text.assign(std::istreambuf_iterator<char>(in), {});
         if (!in) return false;
     }
-    replaceAll(text, "font-family=\"mono-space\"", "font-family=\"monospace\"");
+    for (const auto& [generic, family, fallback] : {std::tuple{"sans-serif", kSansFamily, "sans-serif"},
+                                                    std::tuple{"serif", kSerifFamily, "serif"},
+                                                    std::tuple{"mono-space", kMonoFamily, "monospace"}})
+        replaceAll(text, "font-family=\"" + std::string(generic) + "\"",
+                   "font-family=\"'" + std::string(family) + "', " + fallback + "\"");
     for (auto [name, px] : {std::pair{"width", widthPx}, std::pair{"height", heightPx}}) {
         std::string attr = std::string(name) + "=\"" + std::to_string(px);
         if (std::size_t at = text.find(attr + "pt\""); at != std::string::npos) text.erase(at + attr.size(), 2);
@@ -105,6 +112,8 @@ void fail(const fs::path& file, const fs::path& tmp, const std::string& why) {
 
 void renderPage(const fs::path& file, Format format, int widthPx, int heightPx, const std::function<void()>& draw) {
     std::lock_guard lock(gPlplotMutex);
+    nameChartFonts();
+    warnAboutMissingChartFonts();
     if (!deviceAvailable(deviceName(format)))
         throw std::runtime_error(file.string() + ": cannot write chart: PLplot has no '" +
                                  deviceName(format) + "' driver (install plplot-driver-cairo)");

@@ -16,13 +16,12 @@ cd "$(dirname "$0")/.."
 start=$SECONDS
 cmake --preset asan >/dev/null
 cmake --build --preset asan
-cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' build/asan/CMakeCache.txt)
-"${cxx:-c++}" -shared -fPIC -O1 -o build/asan/no_dlclose.so tests/sanitizers/no_dlclose.cpp
 built=$SECONDS
 echo "asan: build took $((built - start)) s"
 
 # verify_asan_link_order=0: the preloaded no_dlclose.so comes before the ASan runtime; it defines
-# nothing but dlclose, so ASan's interceptors are unaffected.
+# nothing but dlclose, so ASan's interceptors are unaffected. tests/CMakeLists.txt keeps a copy of
+# these options (ST_ASAN_OPTIONS) for the editor tests' children: keep the two in step.
 # intercept_tls_get_addr=0: up to LLVM 16 the runtime's __tls_get_addr interceptor takes a dynamic
 # TLS block whose address is 16 bytes into a page for a pre-2.25 glibc block with a header, reads
 # a bogus range from the words before it, and LeakSanitizer's tracer then dies scanning it at exit
@@ -34,7 +33,9 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0}
 
-preload="$PWD/build/asan/no_dlclose.so${LD_PRELOAD:+ $LD_PRELOAD}"
+# The build made it (target st_no_dlclose, tests/CMakeLists.txt); tests that start the editor
+# preload it in their children themselves (tests/editor/child_sanitizer_env.cpp).
+preload="$PWD/build/asan/tests/no_dlclose.so${LD_PRELOAD:+ $LD_PRELOAD}"
 status=0
 LD_PRELOAD=$preload ctest --preset asan "$@" || status=$?
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package shadowtune needs to build, test and run the editor.
 # Idempotent: exits at once when everything is present. Run as root (or with sudo).
+# fonts-dejavu-core: every chart and label names its DejaVu family (report/chart_fonts.h), so
+# other installed fonts cannot change an image. jq: the command-line tests read JSON with it.
 set -euo pipefail
 
 packages=(
@@ -13,6 +15,8 @@ packages=(
   libembree-dev
   libplplot-dev plplot-driver-cairo
   libcairo2-dev libfontconfig-dev
+  fonts-dejavu-core
+  jq
   libgtest-dev googletest
   xvfb xauth xdotool
   clang-14 libclang-rt-14-dev llvm-14

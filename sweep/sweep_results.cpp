@@ -76,6 +76,7 @@ Manifest manifestOf(const SweepSpec& spec, const std::vector<Point>& points, con
     m.fingerprint = fingerprintOf(spec, points);
     m.scene = spec.base.scene;
     m.presetDir = std::filesystem::absolute(spec.presetDir).lexically_normal();
+    if (!m.presetDir.has_filename()) m.presetDir = m.presetDir.parent_path();  // "/x/." normalises to "/x/"
     m.width = spec.base.output.width;
     m.height = spec.base.output.height;
     for (const Axis& a : spec.axes) {

@@ -1,5 +1,6 @@
 #include "sweep/sweep_spec.h"
 
+#include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
 
@@ -36,7 +37,7 @@ void checkTopKeys(const Json& root, Problems& p) {
 
 fs::path relativeTo(const fs::path& sweepFile, const std::string& path) {
     const fs::path p(path);
-    return p.is_absolute() ? p : sweepFile.parent_path() / p;
+    return p.is_absolute() ? p : folderOf(sweepFile) / p;
 }
 
 std::optional<Settings> readPreset(const fs::path& file, const std::string& jsonPath, Problems& p) {
@@ -78,6 +79,14 @@ void readSet(const Json& root, Settings& base, Problems& p) {
     }
 }
 
+// A value count too large for an integer, as text: "250000", "1e+30", "more than 1e+308".
+std::string countText(double count) {
+    if (!std::isfinite(count)) return "more than 1e+308";
+    char text[32];
+    std::snprintf(text, sizeof text, count < 1e15 ? "%.0f" : "%.3g", count);
+    return text;
+}
+
 // from, from + step, ... up to `to` (inclusive within a millionth of a step).
 std::optional<std::vector<Json>> rangeValues(const FieldInfo& field, const Json& range, const std::string& path,
                                              Problems& p) {
@@ -96,9 +105,12 @@ std::optional<std::vector<Json>> rangeValues(const FieldInfo& field, const Json&
         p.add(path, "needs step > 0 and to >= from");
         return std::nullopt;
     }
+    // In double and checked before any conversion: a huge count (or an infinite one, when
+    // (to - from) / step overflows) does not fit an integer.
     const double count = std::floor((to - from) / step + 1e-6) + 1.0;
-    if (count > double(kMaxPoints)) {
-        p.add(path, "gives " + std::to_string(static_cast<long long>(count)) + " values, more than a sweep may have");
+    if (!(count <= double(kMaxPoints))) {
+        p.add(path, "gives " + countText(count) + " values, more than the " + std::to_string(kMaxPoints) +
+                        " a sweep may have");
         return std::nullopt;
     }
     std::vector<Json> values;
@@ -275,7 +287,7 @@ SweepSpec loadSweep(const fs::path& file) {
     auto base = readPreset(baseFile, "base", p);
     if (!base) throw SettingsError(p.list);
     spec.base = *base;
-    spec.presetDir = baseFile.parent_path();
+    spec.presetDir = folderOf(baseFile);
     readSet(root, spec.base, p);
     readAxes(root, spec, p);
     readReferences(root, spec, p);

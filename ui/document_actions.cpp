@@ -35,7 +35,7 @@ void loadNow(UiFrame& f, const std::filesystem::path& file) {
     Document next = f.state.doc;
     Settings loaded = f.s;
     const bool read = loadDocument(next, file, loaded);
-    const std::string sceneError = read ? sceneProblem(f, loaded.scene, loaded.ground, file.parent_path()) : "";
+    const std::string sceneError = read ? sceneProblem(f, loaded.scene, loaded.ground, folderOf(file)) : "";
     if (!read || !sceneError.empty()) {
         f.state.doc.errors = read ? std::vector<std::string>{file.string() + ": scene: " + sceneError} : next.errors;
         f.state.doc.status.clear();
@@ -60,7 +60,7 @@ void saveCurrent(UiFrame& f) {
 // the same files (issue 13 #1).
 void saveAs(UiFrame& f, const std::filesystem::path& file) {
     closeGesture(f);
-    const std::filesystem::path from = documentFolder(f.state), to = file.parent_path();
+    const std::filesystem::path from = documentFolder(f.state), to = folderOf(file);
     Settings rebased = rebasePaths(f.s, from, to);
     if (!saveDocument(f.state.doc, rebased, file)) return;
     f.req.presetsChanged = true;
@@ -75,7 +75,7 @@ std::string sceneProblem(const UiFrame& f, const std::string& scene, bool ground
 }
 
 std::filesystem::path documentFolder(const UiState& state) {
-    return state.doc.file.empty() ? state.presetDir : state.doc.file.parent_path();
+    return state.doc.file.empty() ? state.presetDir : folderOf(state.doc.file);
 }
 
 void requestQuitFrom(UiState& state, bool dirty) {

@@ -15,6 +15,11 @@ fs::path absoluteFolder(const fs::path& dir) {
 
 }  // namespace
 
+fs::path folderOf(const fs::path& file) {
+    fs::path dir = file.parent_path();
+    return dir.empty() ? fs::path(".") : dir;
+}
+
 std::string rebaseFileReference(const std::string& ref, const fs::path& fromDir, const fs::path& toDir) {
     if (ref.empty() || ref.starts_with("builtin:") || fs::path(ref).is_absolute()) return ref;
     const fs::path target = (absoluteFolder(fromDir) / ref).lexically_normal();
@@ -28,7 +33,7 @@ Settings rebasePaths(Settings s, const fs::path& fromDir, const fs::path& toDir)
 }
 
 void savePresetRebased(const Settings& s, const fs::path& fromDir, const fs::path& file) {
-    savePresetAtomic(rebasePaths(s, fromDir, file.parent_path()), file);
+    savePresetAtomic(rebasePaths(s, fromDir, folderOf(file)), file);
 }
 
 }  // namespace st

@@ -10,6 +10,11 @@
 
 namespace st {
 
+// The folder a file's relative references start from: its parent, or "." for a bare file name
+// ("mine.json" has an empty parent_path(), which std::filesystem::absolute and
+// create_directories refuse). Use it wherever a path's folder is needed.
+std::filesystem::path folderOf(const std::filesystem::path& file);
+
 // `ref` as written in a preset in `fromDir`, rewritten for a preset in `toDir`: relative again
 // where a relative path exists, else absolute. "builtin:..." names, absolute paths and "" are
 // returned as they are.

@@ -27,7 +27,7 @@ done
 check "the package holds no test or fuzz binary" bash -c "! grep -iE 'test|fuzz' '$work/contents'"
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for p in libepoxy0 libegl1 libglfw3 libembree3-3 libopenimageio2.4 libegl-mesa0 libgl1-mesa-dri; do
+for p in libepoxy0 libegl1 libglfw3 libembree3-3 libopenimageio2.4 libegl-mesa0 libgl1-mesa-dri fonts-dejavu-core; do
   check "Depends names $p" grep -qE "(^|, )$p( |,|$)" <<<"$depends"
 done
 echo "$failures failure(s)"

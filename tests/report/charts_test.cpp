@@ -98,7 +98,9 @@ TEST(ScatterChartTest, SvgCarriesTitleAxisLabelsLegendAndReferenceLabelsAsText) 
                              "default", "misclassified %"})
         EXPECT_NE(svg.find(text), std::string::npos) << text;
     EXPECT_NE(svg.find("width=\"1200\""), std::string::npos) << "the SVG is sized in pixels like the PNG";
-    EXPECT_NE(svg.find("font-family=\"monospace\""), std::string::npos) << "the table is monospace";
+    EXPECT_NE(svg.find("font-family=\"'DejaVu Sans Mono', monospace\""), std::string::npos) << "the table is monospace";
+    EXPECT_NE(svg.find("font-family=\"'DejaVu Sans', sans-serif\""), std::string::npos) << "the rest names its family";
+    EXPECT_EQ(svg.find("mono-space"), std::string::npos) << "PLplot's name no viewer knows";
 }
 
 TEST(ScatterChartTest, ValuesALogAxisCannotShowAreClampedAndSaidSo) {

@@ -132,6 +132,25 @@ TEST(SweepSpecTest, BadFilesNameTheFileThePathAndTheReason) {
     EXPECT_NE(messagesOf(dir.write("broken.json", "{\"version\": 1,")).find("broken.json:1:"), std::string::npos);
 }
 
+// A range's count is reckoned in double and checked before it becomes an integer: a huge count
+// (which once read "gives -9223372036854775808 values") and one that overflows to infinity are
+// both refused with the JSON path, the count and the limit. The largest allowed count is not run
+// (expanding 100000 points takes seconds); AxesExpandToEveryCombinationLastAxisFastest has a
+// range that passes.
+TEST(SweepSpecTest, AHugeRangeCountIsRefusedWithTheCountAndTheLimit) {
+    test::TempDir dir;
+    dir.write("base.json", kBase);
+    const auto range = [&](const std::string& from, const std::string& to, const std::string& step) {
+        return messagesOf(dir.write("range.json", R"({"version": 1, "base": "base.json", "axes": [{"field": "cascades.lambda", "range": {"from": )" +
+                                                      from + ", \"to\": " + to + ", \"step\": " + step + "}}]}"));
+    };
+    const std::string file = (dir.path() / "range.json").string();
+    EXPECT_EQ(range("0", "1e30", "1"), file + ": axes[0].range: gives 1e+30 values, more than the 100000 a sweep may have");
+    EXPECT_EQ(range("-1e308", "1e308", "1e-300"),
+              file + ": axes[0].range: gives more than 1e+308 values, more than the 100000 a sweep may have");
+    EXPECT_EQ(range("0", "1", "0.00001"), file + ": axes[0].range: gives 100001 values, more than the 100000 a sweep may have");
+}
+
 // schema/sweep.schema.json is generated from the field table; ST_UPDATE_SCHEMA=1 rewrites it.
 TEST(SweepSchemaTest, SchemaFileIsTheGeneratedOne) {
     const std::filesystem::path file = ST_SOURCE_DIR "/schema/sweep.schema.json";
