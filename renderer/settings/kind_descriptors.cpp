@@ -151,6 +151,8 @@ std::string scaleReason(const Settings& s, std::string_view path) {
 std::string numericReason(const Settings& s, std::string_view path) {
     if (path == "notes") return "Free text: nothing reads it.";
     if (path == "cascades.blendBand" && s.cascades.count < 2) return "Blends one cascade into the next: needs two or more.";
+    const bool splitField = path == "cascades.scheme" || path == "cascades.lambda" || path == "cascades.manualSplits";
+    if (splitField && s.cascades.count < 2) return "One cascade has no split to place: it spans the whole range.";
     return scaleReason(s, path);
 }
 

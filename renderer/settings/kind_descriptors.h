@@ -49,8 +49,8 @@ std::span<const std::string_view> kindIndependentFields();
 
 // True when `path` (a field table path) changes the result of `s`: its rendered image or its
 // measured figures. False for a field the current kinds do not read (filter.evsmNegative with
-// filter.kind "pcf2x2"), a per-cascade bias scale whose bias is 0, a blend band with one cascade,
-// and notes. Unknown paths are false. An element path ("bias.constantScale[1]") is its field's.
+// filter.kind "pcf2x2"), a per-cascade bias scale whose bias is 0, a blend band or a split scheme
+// (and its lambda, manual splits) with one cascade, and notes. Unknown paths are false. An element path ("bias.constantScale[1]") is its field's.
 // Use it where the tuner's applies(s, path) was: fieldApplies(s, path).
 bool fieldApplies(const Settings& s, std::string_view path);
 
