@@ -144,12 +144,14 @@ bool drawBiasScale(const FieldInfo& field, UiFrame& f) {
             factors.assign(static_cast<std::size_t>(f.s.cascades.count), 1.0f);
             changed = true;
         }
+        recordItem(f.state.rects, std::string(field.path) + "#perCascade");
     } else {
         changed = editFloatElements(field, factors, f.state.rects, f.state.fieldEdits);
         if (ImGui::SmallButton("Same for all")) {
             factors.clear();
             changed = true;
         }
+        recordItem(f.state.rects, std::string(field.path) + "#sameForAll");
     }
     if (!unused.empty()) {
         ImGui::PopStyleVar();
