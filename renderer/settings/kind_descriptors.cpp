@@ -126,7 +126,9 @@ std::string readersText(const ModeDescriptor& m, std::string_view path) {
 std::string gatedReason(const Settings& s, std::string_view path) {
     for (const ModeDescriptor& m : modeDescriptors()) {
         if (std::find(m.gates.begin(), m.gates.end(), path) == m.gates.end()) continue;
-        const KindDescriptor& k = m.kinds[static_cast<std::size_t>(modeValue(s, m))];
+        const int value = modeValue(s, m);
+        if (value < 0 || static_cast<std::size_t>(value) >= m.kinds.size()) continue;  // validation names it
+        const KindDescriptor& k = m.kinds[static_cast<std::size_t>(value)];
         if (std::find(k.reads.begin(), k.reads.end(), path) != k.reads.end()) continue;
         return "Used with " + std::string(m.field) + " " + readersText(m, path) + " only (now " + std::string(k.name) +
                ").";
