@@ -2,6 +2,7 @@
 // name the enumerators they describe, and answer fieldApplies as the shaders read the fields.
 // The GL half (a field a kind does not read leaves its image unchanged) is
 // tests/render/kind_descriptors_gl_test.cpp.
+#include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/enum_names.h"
 #include "renderer/settings/kind_descriptors.h"
 #include "renderer/settings/settings_json.h"
@@ -127,6 +128,21 @@ TEST(CascadeBiasTest, FactorsMultiplyTheGlobalBiasAndDefaultToOne) {
     EXPECT_FLOAT_EQ(cascadeBias(b, 1).normalOffset, 1.0f);
     EXPECT_TRUE(hasCascadeBias(b));
     EXPECT_FALSE(hasCascadeBias(BiasSettings{.constantScale = {1.0f, 1.0f}}));
+}
+
+TEST(CascadeBiasTest, FactorListsFollowTheCascadeCount) {
+    Settings s;
+    s.cascades.count = 3;
+    s.bias.constantScale = {1.0f, 2.0f, 3.0f};
+    s.cascades.count = 5;
+    fitCascadeFactors(s.bias, s.cascades.count);
+    EXPECT_EQ(s.bias.constantScale, (std::vector<float>{1.0f, 2.0f, 3.0f, 1.0f, 1.0f}));
+    EXPECT_TRUE(s.bias.slopeScale.empty());
+    EXPECT_TRUE(validate(s).empty());
+    s.cascades.count = 2;
+    fitCascadeFactors(s.bias, s.cascades.count);
+    EXPECT_EQ(s.bias.constantScale, (std::vector<float>{1.0f, 2.0f}));
+    EXPECT_TRUE(validate(s).empty());
 }
 
 TEST(CascadeBiasTest, JsonRoundTripAndOldPresetsReadAsBefore) {

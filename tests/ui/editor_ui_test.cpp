@@ -183,6 +183,12 @@ TEST(EditorUiTallTest, BiasPerCascadeStartsAtOnesAndClears) {
     EXPECT_FALSE(d.drawn("bias.constantScale#unused"));
     d.click("bias.constantScale#perCascade");
     EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, 1.0f, 1.0f}));
+    d.ctrlClick(d.rect("cascades.count").center());  // fewer cascades: the list follows the count
+    d.typeText("2");
+    d.pressKey(kKeyEnter);
+    ASSERT_EQ(d.s.cascades.count, 2);
+    EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, 1.0f}));
+    EXPECT_TRUE(d.last.settingsValid);
     d.frame();
     d.click("bias.constantScale#sameForAll");
     EXPECT_TRUE(d.s.bias.constantScale.empty());
