@@ -53,9 +53,10 @@ ui::ProbeView readProbe(const MeasureSamples& m, int x, int y, const Settings& s
         // shaders/shadow_sampling.glsl: biasedDepth (constant + slope x texel x tan) and
         // shadowCoord (normal offset in texels of the cascade).
         p.texelWorldSize = texelWorld[std::size_t(p.cascade)];
-        p.constantBias = s.bias.constant;
-        p.slopeBias = s.bias.slope * p.texelWorldSize * tanToLight(p.nDotL);
-        p.normalOffset = s.bias.normalOffset * p.texelWorldSize;
+        const CascadeBias bias = cascadeBias(s.bias, p.cascade);  // the global bias times the cascade's factors
+        p.constantBias = bias.constant;
+        p.slopeBias = bias.slope * p.texelWorldSize * tanToLight(p.nDotL);
+        p.normalOffset = bias.normalOffset * p.texelWorldSize;
     }
     if (classes && classes->size() == m.size()) p.truth = truthOf((*classes)[i]);
     return p;

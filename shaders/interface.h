@@ -86,7 +86,8 @@
     M(float, padding)      /* atlas: texels of lit border around the tile; else 0 */              \
     M(int, layer)          /* array layer holding it (array storage: i; else 0) */                \
     M(int, cascadeDataPad0)                                                                       \
-    M(int, cascadeDataPad1)
+    M(int, cascadeDataPad1)                                                                       \
+    M(vec4, biasScale)     /* x, y, z: factors of biasConstant, biasSlope, normalOffset; w 0 */
 
 // Once per frame: how every pixel picks, biases and filters its cascade.
 #define ST_CASCADE_BLOCK(M, A)                                                                    \

@@ -21,7 +21,7 @@ struct ShadowResult {
 };
 
 vec3 shadowCoord(int i, vec3 wsPos, vec3 wsNormal) {
-    vec3 p = wsPos + wsNormal * (normalOffset * cascade[i].texelWorld);
+    vec3 p = wsPos + wsNormal * (normalOffset * cascade[i].biasScale.z * cascade[i].texelWorld);
     return (cascade[i].shadowMatrix * vec4(p, 1.0)).xyz;
 }
 
@@ -139,9 +139,11 @@ float tanToLight(float nDotL) {
     return min(sqrt(1.0 - cosT * cosT) / cosT, 10.0);
 }
 
-// Constant + slope-scaled bias, turned from metres into cascade i's depth units.
+// Constant + slope-scaled bias, each times cascade i's factor (bias.constantScale, slopeScale),
+// turned from metres into cascade i's depth units.
 float biasedDepth(int i, float tsZ, float tanTheta) {
-    float biasMetres = biasConstant + biasSlope * cascade[i].texelWorld * tanTheta;
+    vec4 k = cascade[i].biasScale;
+    float biasMetres = biasConstant * k.x + biasSlope * k.y * cascade[i].texelWorld * tanTheta;
     return min(tsZ - biasMetres / cascade[i].depthRange, 1.0);
 }
 

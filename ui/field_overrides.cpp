@@ -126,12 +126,50 @@ bool drawManualSplits(const FieldInfo& field, UiFrame& f) {
     return storeField(field, f.s, splits);
 }
 
+// bias.constantScale, slopeScale, normalOffsetScale: empty (1 for every cascade) offers "Per
+// cascade", which starts from count factors of 1 (the image unchanged); a list shows a factor per
+// cascade and "Same for all", which empties it again.
+bool drawBiasScale(const FieldInfo& field, UiFrame& f) {
+    const FieldValue value = field.get(f.s);
+    const auto* stored = std::get_if<std::vector<float>>(&value);
+    if (!stored) return drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
+    std::vector<float> factors = *stored;
+    const std::string unused = notApplicableReason(field, f.s);
+    if (!unused.empty()) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ImGui::GetStyle().Alpha * 0.45f);
+    bool changed = false;
+    if (factors.empty()) {
+        ImGui::TextUnformatted(std::string(field.label).c_str());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Per cascade")) {
+            factors.assign(static_cast<std::size_t>(f.s.cascades.count), 1.0f);
+            changed = true;
+        }
+        recordItem(f.state.rects, std::string(field.path) + "#perCascade");
+    } else {
+        changed = editFloatElements(field, factors, f.state.rects, f.state.fieldEdits);
+        if (ImGui::SmallButton("Same for all")) {
+            factors.clear();
+            changed = true;
+        }
+        recordItem(f.state.rects, std::string(field.path) + "#sameForAll");
+    }
+    if (!unused.empty()) {
+        ImGui::PopStyleVar();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", unused.c_str());
+    }
+    recordItem(f.state.rects, std::string(field.path) + (unused.empty() ? "" : "#unused"));
+    recordItem(f.state.rects, std::string(field.path));
+    drawHelpMarker(field);
+    return changed && storeField(field, f.s, factors);
+}
+
 }  // namespace
 
 FieldOverride overrideFor(std::string_view path) {
     if (path == "scene") return drawScene;
     if (path == "cascades.mapSize") return drawMapSize;
     if (path == "cascades.manualSplits") return drawManualSplits;
+    if (path == "bias.constantScale" || path == "bias.slopeScale" || path == "bias.normalOffsetScale") return drawBiasScale;
     return nullptr;
 }
 

@@ -1,5 +1,6 @@
 #include "ui/field_rules.h"
 
+#include "renderer/settings/kind_descriptors.h"
 #include "renderer/settings/number_text.h"
 #include "renderer/settings/split_range.h"
 
@@ -82,48 +83,8 @@ std::string typedValueProblem(const FieldInfo& field, double value) {
     return {};
 }
 
-namespace {
-// The filter parameters each filter.kind reads (shaders/shadow_sampling.glsl, moments.glsl).
-std::string filterNotApplicable(std::string_view p, FilterKind k) {
-    const bool moments = isMomentFilter(k), evsm = k == FilterKind::Evsm2 || k == FilterKind::Evsm4;
-    if (p == "filter.size" && k != FilterKind::PcfNxN && k != FilterKind::Pcss)
-        return "Taps per side of the pcf-nxn and pcss filters only.";
-    if (p == "filter.weights" && k != FilterKind::PcfNxN) return "Weights of the pcf-nxn taps only.";
-    if ((p == "filter.blurRadius" || p == "filter.mipmaps" || p == "filter.moments16" || p == "filter.bleedExponent") &&
-        !moments)
-        return "Used by the moment filters (vsm, evsm2, evsm4, msm) only.";
-    if (p == "filter.minVariance" && k != FilterKind::Vsm && !evsm) return "Used by vsm, evsm2 and evsm4 only.";
-    if (p == "filter.evsmPositive" && !evsm) return "Used by evsm2 and evsm4 only.";
-    if (p == "filter.evsmNegative" && k != FilterKind::Evsm4) return "Used by evsm4 only (the negative warp).";
-    if (p == "filter.momentBias" && k != FilterKind::Msm) return "Used by msm only.";
-    if ((p == "filter.blockerTaps" || p == "filter.pcssMaxRadius") && k != FilterKind::Pcss) return "Used by pcss only.";
-    return {};
-}
-
-std::string screenNotApplicable(std::string_view p, const FilterSettings& f) {
-    if (p.starts_with("filter.screen") && p != "filter.screenSpace" && f.screenSpace == ScreenSpace::Off)
-        return "Used by the screen-space blur only (filter.screenSpace \"blur\").";
-    return {};
-}
-}  // namespace
-
 std::string notApplicableReason(const FieldInfo& field, const Settings& s) {
-    const std::string_view p = field.path;
-    if (p == "cascades.lambda" && s.cascades.scheme != SplitScheme::Practical)
-        return "Used by the practical split scheme only (lambda blends uniform and logarithmic splits).";
-    if (p == "cascades.zExtensionDistance" && s.cascades.zExtension != ZExtension::Distance)
-        return "Used when Z extension is \"distance\" only.";
-    if (p == "cascades.blendBand" && s.cascades.count < 2) return "Blends one cascade into the next: needs two or more.";
-    if (p == "cascades.atlasPadding" && s.cascades.storage != CascadeStorage::Atlas) return "Used with storage \"atlas\" only.";
-    if (p == "cascades.mapSizes" && s.cascades.storage == CascadeStorage::Array)
-        return "A texture array has one size for every layer: use storage \"atlas\" or \"textures\" for a size per cascade.";
-    if (p.starts_with("filter.screen")) return screenNotApplicable(p, s.filter);
-    if (p.starts_with("filter.")) return filterNotApplicable(p, s.filter.kind);
-    if (p == "bias.receiverPlane" && isMomentFilter(s.filter.kind))
-        return "A moment filter has no per-texel depth compare to bias.";
-    if (p == "output.texelBlock" && s.output.view != View::TexelGrid) return "Used by the texel-grid view only.";
-    if (p == "output.sideTexels" && s.output.view != View::Side) return "Drawn in the side view only.";
-    return {};
+    return st::notApplicableReason(s, field.path);  // the kinds' descriptors (kind_descriptors.h)
 }
 
 std::vector<int> powerOfTwoChoices(const FieldInfo& field) {

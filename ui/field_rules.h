@@ -35,8 +35,9 @@ std::string floatFormatFor(const FieldInfo& field, double value);
 // Typed values are refused, never clamped; drags stay in range by themselves.
 std::string typedValueProblem(const FieldInfo& field, double value);
 
-// Why `field` does nothing with the rest of `s` as it is ("used by the practical scheme only"),
-// or "" when it applies. The widget is greyed with this as its tooltip.
+// Why `field` does nothing with the rest of `s` as it is ("Used with cascades.scheme practical
+// only (now uniform)."), or "" when it applies: st::notApplicableReason of the kinds' descriptors
+// (renderer/settings/kind_descriptors.h). The widget is greyed with this as its tooltip.
 std::string notApplicableReason(const FieldInfo& field, const Settings& s);
 
 // The label of element i of a list field, "Manual splits [1]": the index validation messages

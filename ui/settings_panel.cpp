@@ -1,6 +1,7 @@
 // The Settings panel: every row of the field table as a widget, grouped by the first segment of
 // its JSON path in collapsing headers, with derived figures beside the knobs and the problems
 // validate() finds shown in red (under the field, and listed under the panel).
+#include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/validation.h"
 #include "ui/field_overrides.h"
 #include "ui/field_rules.h"
@@ -65,6 +66,7 @@ void drawField(UiFrame& f, const FieldInfo& field) {
     const std::optional<Settings> before = affectsMapCost(field.path) ? std::optional<Settings>(f.s) : std::nullopt;
     bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     if (changed && before && holdExpensiveEdit(f, field, *before)) changed = false;
+    if (changed && field.path == "cascades.count") fitCascadeFactors(f.s.bias, f.s.cascades.count);
     f.edited = f.edited || changed;
     drawFieldIssues(f, field);
     ImGui::PopID();

@@ -39,7 +39,7 @@ CasterVolume casterVolume(const Settings& s, const CameraParams& cam, std::span<
     // kernel's radius, one texel of the 2x2 comparison, the normal offset; plus one texel spare
     // for float rounding. The texel is the map's: fit.texelWorldSize.
     const float taps = s.filter.kind == FilterKind::PcfNxN ? float(s.filter.size / 2) : 0.0f;
-    const float offset = s.bias.normalOffset;
+    const float offset = cascadeBias(s.bias, index).normalOffset;
     v.margin = fit.texelWorldSize * (taps + 2.0f + offset);
     v.lsReceiverMinZ -= fit.texelWorldSize * (offset + 1.0f);  // normal offset moves receivers in z too
     return v;

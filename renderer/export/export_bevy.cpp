@@ -72,7 +72,7 @@ void addBias(EngineExport& e, const Settings& s) {
               "light.angularDiameter in radians; Bevy's PCSS needs the experimental_pbr_pcss feature (the unit of this "
               "field is not confirmed against Bevy's shader)");
     if (b.slope > 0.0f) e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "Bevy has no slope-scaled bias");
-    if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Bevy has no receiver-plane bias");
+    if (b.receiverPlane && fieldApplies(s, "bias.receiverPlane")) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Bevy has no receiver-plane bias");
 }
 
 }  // namespace

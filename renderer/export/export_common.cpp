@@ -61,6 +61,38 @@ std::string filterKindText(const Settings& s) {
     return "filter.kind " + std::string(EnumNames<FilterKind>::names[size_t(s.filter.kind)]);
 }
 
+namespace {
+// bias.constantScale / slopeScale / normalOffsetScale: no engine's light or project settings hold a
+// bias per cascade (Godot's shadow_bias grows with each split's depth range by itself, and
+// godotengine/godot #100375 asks for more), so each scaled bias is listed with its values per cascade.
+void addCascadeBias(EngineExport& e, const Settings& s) {
+    const BiasSettings& b = s.bias;
+    if (!hasCascadeBias(b)) return;
+    struct Scaled {
+        const char* name;
+        const char* path;
+        float global;
+        float (*of)(const CascadeBias&);
+    };
+    const Scaled scaled[] = {
+        {"(constant bias per cascade)", "bias.constantScale", b.constant, [](const CascadeBias& c) { return c.constant; }},
+        {"(slope bias per cascade)", "bias.slopeScale", b.slope, [](const CascadeBias& c) { return c.slope; }},
+        {"(normal offset per cascade)", "bias.normalOffsetScale", b.normalOffset,
+         [](const CascadeBias& c) { return c.normalOffset; }}};
+    for (const Scaled& k : scaled) {
+        const FieldValue factors = findField(k.path)->get(s);
+        const auto& list = std::get<std::vector<float>>(factors);
+        const bool varies = std::any_of(list.begin(), list.end(), [](float v) { return v != 1.0f; });
+        if (!varies || !fieldApplies(s, k.path)) continue;
+        std::vector<double> values;
+        for (int i = 0; i < s.cascades.count; ++i) values.push_back(round6(k.of(cascadeBias(b, i))));
+        e.add(k.name, numbers(values), Mapping::NoEquivalent,
+              std::string(k.path) + ": the engine applies one value to every cascade; the global " +
+                  formatNumber(round6(k.global)) + " exported above");
+    }
+}
+}  // namespace
+
 void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades) {
     const CascadeSettings& c = s.cascades;
     using M = Mapping;
@@ -81,6 +113,7 @@ void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades) {
               "filter.screenSpace: the shadow mask blurred in screen space (seed 001); no shadow setting does it");
     if (s.filter.padding)
         e.add("(PCF padding)", true, M::NoEquivalent, "filter.padding grows each light box by the kernel's reach (seed 004)");
+    addCascadeBias(e, s);
     if (!engineFades && c.fadeBand > 0.0f)
         e.add("(far fade)", round6(c.fadeBand), M::NoEquivalent,
               "cascades.fadeBand fades the last cascade's far end to lit; the engine cuts shadows off at the distance");

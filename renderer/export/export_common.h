@@ -2,6 +2,7 @@
 // What every engine mapping needs from a preset: its split depths, the end of the shadowed range
 // and the texel world size of the first cascade, which converts texel-relative biases to metres.
 #include "renderer/export/engine_export.h"
+#include "renderer/settings/kind_descriptors.h"
 
 #include <vector>
 
@@ -35,7 +36,7 @@ double fadeShareOfEnd(const Settings& s, const PresetFacts& f);
 // "filter.kind vsm": for the notes of an engine's filter item.
 std::string filterKindText(const Settings& s);
 // Settings no engine's shadow settings expose (depth-fitted splits, a map size per cascade, cascades
-// redrawn every k frames, PCF padding; the far fade where `engineFades` is false): one no-equivalent
+// redrawn every k frames, PCF padding, a bias per cascade; the far fade where `engineFades` is false): one no-equivalent
 // item each, only where the preset uses it, so an export never reads as complete when it is not.
 void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades);
 

@@ -65,7 +65,7 @@ void addBias(EngineExport& e, const Settings& s) {
           "glPolygonOffset factor: depth slope per texel, ~ texel x tan, shadowtune's slope unit");
     e.add("polygonOffsetConstant", 0.5, M::NoEquivalent, "units of depth resolution; Filament's default kept");
     addFilter(e, s);
-    if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "not a ShadowOptions field");
+    if (b.receiverPlane && fieldApplies(s, "bias.receiverPlane")) e.add("(receiver-plane bias)", true, M::NoEquivalent, "not a ShadowOptions field");
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ void addFit(EngineExport& e, const Settings& s, const PresetFacts& f) {
           "Godot reaches this far toward the sun beyond each split's sphere and clamps casters in front "
           "(pancaking); shadowtune's z extension '" + std::string(EnumNames<ZExtension>::names[size_t(c.zExtension)]) +
               "' does one of the two");
-    e.add("directional_shadow_blend_splits", c.blendBand > 0.0f, M::Approximated,
+    e.add("directional_shadow_blend_splits", c.blendBand > 0.0f && fieldApplies(s, "cascades.blendBand"), M::Approximated,
           "Godot blends across the whole overlap with the previous split; shadowtune's blendBand " +
               formatFloat(c.blendBand) + " blends a fraction of each cascade");
     const bool godotLike = c.fit == FitMode::Sphere && c.stabilize;
@@ -72,7 +72,7 @@ void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
     e.add("shadow_normal_bias", round6(b.normalOffset), M::Approximated,
           "texels of the split, as bias.normalOffset; Godot scales it by (1 - N.L) and drops its light-direction part");
     const FilterKind k = s.filter.kind;
-    const bool taps = k == FilterKind::PcfNxN || k == FilterKind::Pcss;
+    const bool taps = fieldApplies(s, "filter.size");  // the kinds that spread filter.size^2 taps
     e.add("rendering/lights_and_shadows/directional_shadow/soft_shadow_filter_quality",
           taps ? std::min(5, s.filter.size / 2 + 1) : isMomentFilter(k) ? 2 : 0, M::Approximated,
           "0 hard (one hardware-compared tap, like pcf2x2), 2 soft low (Godot's default) .. 5 ultra: rotated disk "
@@ -87,7 +87,7 @@ void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
                : "0: no PCSS, as " + filterKindText(s));
     if (b.slope > 0.0f)
         e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "Godot has no slope-scaled bias for directional lights");
-    if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Godot has no receiver-plane bias");
+    if (b.receiverPlane && fieldApplies(s, "bias.receiverPlane")) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Godot has no receiver-plane bias");
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ void addBiasAndFilter(EngineExport& e, const Settings& s, const PresetFacts& f) 
         e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent,
               "the URP asset has no moment (VSM/EVSM/MSM) or PCSS filter for the main light");
     if (b.slope > 0.0f) e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "URP has no slope-scaled bias");
-    if (b.receiverPlane) e.add("(receiver-plane bias)", true, M::NoEquivalent, "URP has no receiver-plane bias");
+    if (b.receiverPlane && fieldApplies(s, "bias.receiverPlane")) e.add("(receiver-plane bias)", true, M::NoEquivalent, "URP has no receiver-plane bias");
 }
 
 void addUnmapped(EngineExport& e, const Settings& s, const PresetFacts& f) {

@@ -81,6 +81,9 @@ gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& pla
         c.vsFar = plan.splits[static_cast<std::size_t>(i) + 1];
         c.texelWorld = f.texelWorldSize;
         c.depthRange = f.lsBox.extent().z;
+        const BiasSettings& bias = s.bias;
+        c.biasScale = glm::vec4(cascadeFactor(bias.constantScale, i), cascadeFactor(bias.slopeScale, i),
+                                cascadeFactor(bias.normalOffsetScale, i), 0.0f);
     }
     return b;
 }

@@ -225,6 +225,18 @@ std::vector<FieldInfo> filterAndBiasRows() {
         {.path = "bias.receiverPlane", .label = "Receiver-plane bias",
          .help = "Derives depth bias from screen-space depth derivatives, which suits large filter kernels.",
          .kind = K::Bool, .shader = "receiverPlane", ST_FIELD_ACCESS(bias.receiverPlane)},
+        // Factors, not per-cascade values: the global bias stays the one knob an artist turns (the
+        // factors follow it), an empty list is today's behaviour, and a tuner searches a unitless
+        // number near 1 per cascade whatever the scene's scale.
+        {.path = "bias.constantScale", .label = "Constant bias per cascade",
+         .help = "Factor of the constant bias per cascade, 1 = as set above (far cascades' larger texels may need more); empty = 1s.",
+         .unit = "x", .kind = K::FloatList, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.constantScale)},
+        {.path = "bias.slopeScale", .label = "Slope bias per cascade",
+         .help = "Factor of the slope bias per cascade, 1 = as set above: trades acne for peter-panning in one cascade; empty = 1 for all.",
+         .unit = "x", .kind = K::FloatList, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.slopeScale)},
+        {.path = "bias.normalOffsetScale", .label = "Normal offset per cascade",
+         .help = "Factor of the normal offset for each cascade (1 = as set above); empty = 1 for all.",
+         .unit = "x", .kind = K::FloatList, .min = 0, .max = 100, .step = 0.01, ST_FIELD_ACCESS(bias.normalOffsetScale)},
     };
 }
 

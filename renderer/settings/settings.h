@@ -8,6 +8,8 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -226,8 +228,41 @@ struct BiasSettings {
     float slope = 1.0f;         // texel world sizes per unit of tan(angle to light)
     float normalOffset = 0.0f;  // receiver moved along its normal, in texel world sizes
     bool receiverPlane = false; // derivative-based receiver-plane depth bias (seed 004)
+    // Per cascade factors of constant, slope and normal offset (cascadeBias below): empty = 1 for every
+    // cascade, else one per cascade. Factors, not values, so the global knobs stay the artist's one
+    // control and a tuner searches a unitless number near 1 per cascade.
+    std::vector<float> constantScale;
+    std::vector<float> slopeScale;
+    std::vector<float> normalOffsetScale;
     bool operator==(const BiasSettings&) const = default;
 };
+
+// The bias one cascade applies: the global constant, slope and normal offset times that cascade's
+// factor (1 where a list is empty or shorter). The shader (CascadeData::biasScale), caster culling
+// and the exporters read it here.
+struct CascadeBias {
+    float constant = 0.0f;      // metres
+    float slope = 0.0f;         // texel world sizes per unit tan(angle to the sun)
+    float normalOffset = 0.0f;  // texel world sizes
+};
+
+inline float cascadeFactor(const std::vector<float>& factors, int cascade) {
+    const auto i = static_cast<std::size_t>(cascade);
+    return i < factors.size() ? factors[i] : 1.0f;
+}
+
+inline CascadeBias cascadeBias(const BiasSettings& b, int cascade) {
+    return {b.constant * cascadeFactor(b.constantScale, cascade), b.slope * cascadeFactor(b.slopeScale, cascade),
+            b.normalOffset * cascadeFactor(b.normalOffsetScale, cascade)};
+}
+
+// True when some cascade's factor differs from 1: the preset biases its cascades differently.
+inline bool hasCascadeBias(const BiasSettings& b) {
+    for (const std::vector<float>* list : {&b.constantScale, &b.slopeScale, &b.normalOffsetScale})
+        for (float f : *list)
+            if (f != 1.0f) return true;
+    return false;
+}
 
 struct OutputSettings {
     int width = 640;

@@ -1,6 +1,7 @@
 #include "renderer/settings/validation.h"
 
 #include "renderer/settings/enum_names.h"
+#include "renderer/settings/kind_descriptors.h"
 #include "renderer/settings/number_text.h"
 #include "renderer/settings/split_range.h"
 
@@ -195,27 +196,33 @@ void checkGround(const Settings& s, std::vector<SettingsIssue>& out) {
         out.push_back({"ground", "must be false for " + s.scene + ", which has its own ground"});
 }
 
-void checkReceiverPlane(const Settings& s, std::vector<SettingsIssue>& out) {
-    if (!s.bias.receiverPlane || !isMomentFilter(s.filter.kind)) return;
-    out.push_back({"bias.receiverPlane", "must be false with filter.kind \"" + std::string(enumName(s.filter.kind)) +
-                                             "\": a moment filter compares no texel depths to put on the receiver's plane"});
+// Each filter kind samples the storages its descriptor lists (renderer/settings/kind_descriptors.h):
+// the moment maps hold one layer per cascade of one texture array (renderer/render/moment_maps.h);
+// PCSS's blocker search reads raw depths from the one depth texture of the array or the atlas (the
+// per-cascade textures are bound with depth compare only).
+void checkFilterStorage(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (storageSupports(s.filter.kind, s.cascades.storage)) return;
+    std::string names;
+    for (CascadeStorage storage : describe(s.filter.kind).storages)
+        names += (names.empty() ? "\"" : "\" or \"") + std::string(enumName(storage));
+    const std::string why = isMomentFilter(s.filter.kind)
+                                ? "the moment maps hold one layer per cascade of one texture array"
+                                : "the blocker search reads raw depths from one depth texture";
+    out.push_back({"filter.kind", "\"" + std::string(enumName(s.filter.kind)) + "\" needs cascades.storage " + names +
+                                      "\", got \"" + std::string(enumName(s.cascades.storage)) + "\": " + why});
 }
 
-// The moment maps are built as one array of one layer per cascade, all of one size
-// (renderer/render/moment_maps.h); an atlas tile or a texture of its own has no layer there.
-void checkMomentStorage(const Settings& s, std::vector<SettingsIssue>& out) {
-    if (!isMomentFilter(s.filter.kind) || s.cascades.storage == CascadeStorage::Array) return;
-    out.push_back({"filter.kind", "\"" + std::string(enumName(s.filter.kind)) + "\" needs cascades.storage \"array\", got \"" +
-                                      std::string(enumName(s.cascades.storage)) +
-                                      "\": the moment maps hold one layer per cascade of one texture array"});
-}
-
-// PCSS's blocker search reads raw depths from the one depth texture of the array or the atlas;
-// the per-cascade textures are bound with depth compare only.
-void checkPcssStorage(const Settings& s, std::vector<SettingsIssue>& out) {
-    if (s.filter.kind != FilterKind::Pcss || s.cascades.storage != CascadeStorage::Textures) return;
-    out.push_back({"filter.kind", "\"pcss\" needs cascades.storage \"array\" or \"atlas\", got \"textures\": the "
-                                  "blocker search reads raw depths from one depth texture"});
+// A per-cascade bias scale list is empty (1 for every cascade) or holds one factor per cascade.
+void checkBiasScales(const Settings& s, std::vector<SettingsIssue>& out) {
+    const auto count = static_cast<std::size_t>(s.cascades.count);
+    const std::pair<const char*, const std::vector<float>*> lists[] = {{"bias.constantScale", &s.bias.constantScale},
+                                                                      {"bias.slopeScale", &s.bias.slopeScale},
+                                                                      {"bias.normalOffsetScale", &s.bias.normalOffsetScale}};
+    for (const auto& [path, list] : lists) {
+        if (list->empty() || list->size() == count) continue;
+        out.push_back({path, "needs one factor per cascade (cascades.count " + std::to_string(count) + ") or none, got " +
+                                 std::to_string(list->size())});
+    }
 }
 
 const std::vector<CrossRule>& crossRules() {
@@ -240,15 +247,13 @@ const std::vector<CrossRule>& crossRules() {
          {"path.frames", "path.keyframes"},
          checkPathKeyframes},
         {"ground is for glTF scenes; built-in scenes have their own.", {"scene", "ground"}, checkGround},
-        {"bias.receiverPlane applies to the depth-compare filters (hard, pcf2x2, pcf-nxn), not to the moment "
-         "filters (vsm, evsm2, evsm4, msm).",
-         {"filter.kind", "bias.receiverPlane"},
-         checkReceiverPlane},
-        {"The moment filters (vsm, evsm2, evsm4, msm) need cascades.storage \"array\".",
+        {"Each filter.kind needs a cascades.storage it can sample: the moment filters (vsm, evsm2, evsm4, msm) "
+         "\"array\", \"pcss\" \"array\" or \"atlas\".",
          {"filter.kind", "cascades.storage"},
-         checkMomentStorage},
-        {"filter.kind \"pcss\" needs cascades.storage \"array\" or \"atlas\".", {"filter.kind", "cascades.storage"},
-         checkPcssStorage},
+         checkFilterStorage},
+        {"bias.constantScale, bias.slopeScale and bias.normalOffsetScale are empty or hold one factor per cascade.",
+         {"cascades.count", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale"},
+         checkBiasScales},
     };
     return rules;
 }

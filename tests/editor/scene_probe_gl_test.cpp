@@ -30,6 +30,12 @@ protected:
 };
 
 TEST_F(SceneProbeGLTest, ProbedFiguresMatchTheCascadePlanAtEveryCascade) {
+    // Cascade c's constant bias and normal offset at 1 + c and 1 + c / 2 times the global ones.
+    settings.bias.normalOffset = 0.5f;
+    for (int c = 0; c < settings.cascades.count; ++c) {
+        settings.bias.constantScale.push_back(1.0f + float(c));
+        settings.bias.normalOffsetScale.push_back(1.0f + 0.5f * float(c));
+    }
     renderer.render(settings);
     SceneProbe probe;
     probe.update(true, renderer, settings);
@@ -72,8 +78,8 @@ TEST_F(SceneProbeGLTest, ProbedFiguresMatchTheCascadePlanAtEveryCascade) {
                 EXPECT_NEAR(p.slopeBias, settings.bias.slope * p.texelWorldSize * std::min(tanTheta, 10.0f),
                             1e-3f * p.texelWorldSize + 1e-6f);
             }
-            EXPECT_FLOAT_EQ(p.constantBias, settings.bias.constant);
-            EXPECT_FLOAT_EQ(p.normalOffset, settings.bias.normalOffset * p.texelWorldSize);
+            EXPECT_FLOAT_EQ(p.constantBias, settings.bias.constant * (1.0f + float(expected)));
+            EXPECT_FLOAT_EQ(p.normalOffset, settings.bias.normalOffset * (1.0f + 0.5f * float(expected)) * p.texelWorldSize);
             EXPECT_EQ(p.truth, -1) << "no truth before the Accuracy panel computed it";
         }
     EXPECT_GT(probed, 200);

@@ -128,6 +128,31 @@ TEST(ExportMathTest, ShadowtuneOnlySettingsAreListedWhereUsed) {
     EXPECT_EQ(exportSettings(s, Engine::Unity).find("(cascade update interval)")->value, nlohmann::json({1, 1, 2, 4}));
 }
 
+// No engine holds a bias per cascade: every exporter lists each scaled bias with its values per
+// cascade (global x factor) as no equivalent; factors of 1, a zero bias or a receiver-plane bias a
+// moment filter ignores are not listed.
+TEST(ExportMathTest, BiasPerCascadeAndIgnoredFieldsAreListedAsTheyApply) {
+    Settings s = handSplits();
+    s.bias = {.constant = 0.02f, .slope = 1.0f, .normalOffset = 0.0f, .receiverPlane = false,
+              .constantScale = {1.0f, 1.0f, 2.0f, 3.0f}, .slopeScale = {1.0f, 1.0f, 1.0f, 1.0f},
+              .normalOffsetScale = {1.0f, 2.0f, 2.0f, 2.0f}};
+    for (size_t i = 0; i < kEngineNames.size(); ++i) {
+        const EngineExport e = exportSettings(s, Engine(i));
+        const ExportItem* constant = e.find("(constant bias per cascade)");
+        ASSERT_NE(constant, nullptr) << kEngineNames[i];
+        EXPECT_EQ(constant->mapping, Mapping::NoEquivalent);
+        EXPECT_EQ(constant->value, nlohmann::json({0.02, 0.02, 0.04, 0.06})) << kEngineNames[i];
+        EXPECT_EQ(e.find("(slope bias per cascade)"), nullptr) << "factors of 1";
+        EXPECT_EQ(e.find("(normal offset per cascade)"), nullptr) << "a factor of a zero offset";
+    }
+    s.filter.kind = FilterKind::Vsm;
+    s.bias.receiverPlane = true;  // valid, and ignored by a moment filter
+    for (Engine engine : {Engine::Godot, Engine::Unity, Engine::Bevy, Engine::Filament})
+        EXPECT_EQ(exportSettings(s, engine).find("(receiver-plane bias)"), nullptr);
+    s.filter.kind = FilterKind::Pcf2x2;
+    EXPECT_NE(exportSettings(s, Engine::Godot).find("(receiver-plane bias)"), nullptr);
+}
+
 TEST(ExportMathTest, EngineNames) {
     EXPECT_EQ(parseEngine("godot"), Engine::Godot);
     EXPECT_EQ(parseEngine("threejs"), Engine::ThreeJs);

@@ -26,7 +26,8 @@ Settings everyFieldChanged() {
                 .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
                 .pcssMaxRadius = 12.0f, .screenSpace = ScreenSpace::Blur, .screenDownsample = 4,
                 .screenBlurRadius = 6, .screenDepthSigma = 0.25f};
-    s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true};
+    s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true,
+              .constantScale = {1.0f, 1.5f, 2.25f}, .slopeScale = {0.5f, 1.0f, 1.0f}, .normalOffsetScale = {1.0f, 1.0f, 3.0f}};
     s.output = {.width = 800, .height = 600, .view = View::Cascades, .texelBlock = 16, .sideTexels = true};
     s.path = {.frames = 12,
               .keyframes = {{.position = {0.0f, 2.0f, 5.0f}, .target = {0.0f, 1.0f, -5.0f}, .fovY = 50.0f},

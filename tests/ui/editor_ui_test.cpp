@@ -170,6 +170,30 @@ TEST_F(EditorUiTest, FieldsTheModeDoesNotUseAreGreyed) {
     EXPECT_FALSE(d.drawn("cascades.lambda#unused"));
 }
 
+// The per-cascade bias factors: "Per cascade" starts from a factor of 1 per cascade (the image as
+// it was), "Same for all" empties the list; a factor of a zero bias is greyed.
+TEST(EditorUiTallTest, BiasPerCascadeStartsAtOnesAndClears) {
+    UiDriver d({1280.0f, 4000.0f});  // tall enough that the bias group is on screen
+    FrameStats stats = fakeFrameStats();
+    d.in.stats = &stats;
+    d.s.cascades.count = 3;
+    d.s.bias.normalOffset = 0.0f;
+    d.frame();
+    EXPECT_TRUE(d.drawn("bias.normalOffsetScale#unused"));
+    EXPECT_FALSE(d.drawn("bias.constantScale#unused"));
+    d.click("bias.constantScale#perCascade");
+    EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, 1.0f, 1.0f}));
+    d.ctrlClick(d.rect("cascades.count").center());  // fewer cascades: the list follows the count
+    d.typeText("2");
+    d.pressKey(kKeyEnter);
+    ASSERT_EQ(d.s.cascades.count, 2);
+    EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, 1.0f}));
+    EXPECT_TRUE(d.last.settingsValid);
+    d.frame();
+    d.click("bias.constantScale#sameForAll");
+    EXPECT_TRUE(d.s.bias.constantScale.empty());
+}
+
 TEST_F(EditorUiTest, ManualSplitLabelsUseTheIndexValidationNames) {
     d.s.cascades.scheme = SplitScheme::Manual;
     d.s.cascades.manualSplits = {6.2f, 5.0f, 92.0f};  // [1] is not increasing

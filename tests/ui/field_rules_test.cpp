@@ -149,7 +149,7 @@ TEST(FieldRulesTest, FilterStorageAndViewFieldsApplyToTheirModesOnly) {
     Settings s;
     const std::vector<std::pair<const char*, std::vector<FilterKind>>> uses{
         {"filter.size", {FilterKind::PcfNxN, FilterKind::Pcss}},
-        {"filter.weights", {FilterKind::PcfNxN}},
+        {"filter.weights", {FilterKind::PcfNxN, FilterKind::Pcss}},  // PCSS spreads the NxN weights
         {"filter.blurRadius", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}},
         {"filter.bleedExponent", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}},
         {"filter.minVariance", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4}},
