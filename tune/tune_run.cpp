@@ -4,6 +4,7 @@
 #include "metrics/figure_table.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
+#include "renderer/settings/validation.h"
 #include "sweep/sweep_results.h"
 #include "sweep/sweep_spec.h"
 #include "tune/tune_eval.h"
@@ -163,6 +164,7 @@ public:
                           (opt_.outDir / "evaluations.jsonl").string() + "; run the same command to resume";
             return out;
         }
+        if (result_.best) simplify(*result_.best);
         if (!result_.best) {
             out.infeasible = true;
             out.message = "no point within the budget of " + budgetText(budget_) + " kept the artifact classes at the input's "
@@ -251,6 +253,36 @@ private:
     Json evalJson(const Evaluation& e) const {
         return {{"error", e.error}, {"costMs", e.costMs}, {"mapBytes", e.mapBytes}, {"constraintsMet", e.constraintsMet},
                 {"violated", e.violated}, {"figures", e.figures}};
+    }
+
+    // The tuned preset without the changes that buy nothing: a change whose removal keeps the point
+    // within the budget and the constraints at no more error and no more cost is undone (a
+    // restart's random moves ride along otherwise). These are the evaluations the explanation's
+    // "in the tuned preset" needs anyway.
+    void simplify(std::size_t best) {
+        Candidate c = result_.evaluated[best];
+        for (bool undone = true; undone;) {
+            undone = false;
+            for (const Change& ch : changesBetween(input_, c.settings)) {
+                Settings without;
+                try {
+                    without = withFieldJson(c.settings, ch.path, ch.from);
+                } catch (const SettingsError&) {
+                    continue;
+                }
+                if (without == c.settings || !validate(without).empty()) continue;
+                const Evaluation e = judge(measured(without, "tuned"), objective_);
+                if (e.valid && e.constraintsMet && budget_.fits(e) && e.error <= c.eval.error && e.costMs <= c.eval.costMs) {
+                    say("simplified: " + ch.path + " back to " + (ch.from.is_string() ? ch.from.get<std::string>() : ch.from.dump()) +
+                        " (it bought nothing)");
+                    c = {without, e, c.move + ", simplified", true, 0.0};
+                    undone = true;
+                    break;
+                }
+            }
+        }
+        result_.evaluated.push_back(std::move(c));
+        result_.best = result_.evaluated.size() - 1;
     }
 
     void writeOutputs(const Candidate& best, double seconds) {

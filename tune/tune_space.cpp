@@ -1,14 +1,28 @@
 #include "tune/tune_space.h"
 
+#include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/field_table.h"
+#include "renderer/settings/kind_descriptors.h"
 #include "renderer/settings/settings_json.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace st::tune {
 namespace {
 using Json = nlohmann::json;
+
+// "bias.constantScale[2]": a list field's element (the per-cascade bias factors).
+struct Element {
+    std::string list;
+    std::size_t index = 0;
+};
+std::optional<Element> elementOf(const std::string& path) {
+    const std::size_t open = path.find('[');
+    if (open == std::string::npos || path.back() != ']') return std::nullopt;
+    return Element{path.substr(0, open), std::size_t(std::stoul(path.substr(open + 1, path.size() - open - 2)))};
+}
 
 const FieldInfo& field(const std::string& path) {
     const FieldInfo* f = findField(path);
@@ -27,9 +41,6 @@ std::vector<Json> list(std::initializer_list<T> values) {
     return {values.begin(), values.end()};
 }
 
-bool isMoment(FilterKind k) {
-    return k == FilterKind::Vsm || k == FilterKind::Evsm2 || k == FilterKind::Evsm4 || k == FilterKind::Msm;
-}
 }  // namespace
 
 const Dimension* Space::find(const std::string& path) const {
@@ -65,12 +76,27 @@ Space defaultSpace(const Settings& base) {
     add("bias.slope", list({0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0}));
     add("bias.normalOffset", list({0.0, 0.25, 0.5, 0.75, 1.0, 1.5}));
     add("bias.receiverPlane", list({false, true}));
+    // Bias per cascade: factors of the global constant and slope (bias.constantScale, slopeScale).
+    for (int i = 0; i < kMaxTunedCascades; ++i) {
+        add("bias.constantScale[" + std::to_string(i) + "]", list({0.25, 0.5, 1.0, 1.5, 2.0, 3.0}));
+        add("bias.slopeScale[" + std::to_string(i) + "]", list({0.25, 0.5, 1.0, 1.5, 2.0, 3.0}));
+    }
     return s;
 }
 
 Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json& value) {
+    if (const std::optional<Element> e = elementOf(path)) {
+        const FieldInfo& f = field(e->list);
+        auto factors = std::get<std::vector<float>>(f.get(s));
+        if (factors.empty()) factors.assign(std::size_t(s.cascades.count), 1.0f);  // every cascade at the global bias
+        if (e->index >= factors.size()) throw SettingsError(path + ": no cascade " + std::to_string(e->index));
+        factors[e->index] = value.get<float>();
+        f.set(s, factors);
+        return s;
+    }
     const FieldInfo& f = field(path);
     f.set(s, readFieldValue(f, value, path));
+    if (path == "cascades.count") fitCascadeFactors(s.bias, s.cascades.count);
     // Manual splits are one per cascade boundary: another count, or a weight, means computed splits.
     const bool manual = s.cascades.scheme == SplitScheme::Manual;
     if (manual && (path == "cascades.lambda" || s.cascades.manualSplits.size() != std::size_t(s.cascades.count - 1))) {
@@ -83,6 +109,10 @@ Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json
 Settings withValue(Settings s, const Dimension& d, std::size_t i) { return withFieldJson(std::move(s), d.path, d.values.at(i)); }
 
 Json currentValue(const Settings& s, const Dimension& d) {
+    if (const std::optional<Element> e = elementOf(d.path)) {
+        const auto factors = std::get<std::vector<float>>(field(e->list).get(s));
+        return e->index < factors.size() ? Json(double(factors[e->index])) : Json(1.0);
+    }
     const FieldInfo& f = field(d.path);
     return fieldValueToJson(f, f.get(s));
 }
@@ -102,15 +132,8 @@ std::size_t currentIndex(const Settings& s, const Dimension& d) {
 }
 
 bool applies(const Settings& s, const std::string& path) {
-    const FilterKind k = s.filter.kind;
-    if (path == "cascades.lambda") return s.cascades.count > 1 && s.cascades.scheme != SplitScheme::Uniform;
-    if (path == "cascades.blendBand") return s.cascades.count > 1;
-    if (path == "filter.size") return k == FilterKind::PcfNxN || k == FilterKind::Pcss;
-    if (path == "filter.blurRadius") return isMoment(k);
-    if (path == "filter.pcssMaxRadius") return k == FilterKind::Pcss;
-    if (path == "bias.receiverPlane") return !isMoment(k);
-    if (path == "bias.constant" || path == "bias.slope" || path == "bias.normalOffset") return true;
-    return true;
+    if (const std::optional<Element> e = elementOf(path)) return int(e->index) < s.cascades.count && fieldApplies(s, path);
+    return fieldApplies(s, path);
 }
 
 std::vector<Change> changesBetween(const Settings& from, const Settings& to) {

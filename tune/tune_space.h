@@ -11,9 +11,12 @@
 
 namespace st::tune {
 
+// Bias factors per cascade are tuned for the first this many cascades (the space's count goes to 6).
+inline constexpr int kMaxTunedCascades = 6;
+
 // One knob: a field of the settings table (renderer/settings/field_table.h) and its candidates.
 struct Dimension {
-    std::string path;                   // "cascades.lambda"
+    std::string path;                   // "cascades.lambda", or a list element: "bias.constantScale[1]"
     std::vector<nlohmann::json> values;  // in order: neighbours are adjacent
 };
 
@@ -41,9 +44,10 @@ std::size_t currentIndex(const Settings& s, const Dimension& d);
 // `s`'s value of `d` as JSON (the field table's JSON form).
 nlohmann::json currentValue(const Settings& s, const Dimension& d);
 
-// Whether `d` changes what settings `s` render: filter.size only for PCF NxN and PCSS, moment
-// parameters only for moment kinds, manual splits only with the manual scheme, ... A move along a
-// dimension that does not apply is not worth an evaluation.
+// Whether `d` changes what settings `s` render (renderer/settings/kind_descriptors.h:
+// filter.size only for PCF NxN and PCSS, moment parameters only for moment kinds, a cascade's
+// bias factor only for a cascade that exists, ...). A move along one that does not is not worth
+// an evaluation.
 bool applies(const Settings& s, const std::string& path);
 
 // Every field whose value differs between `from` and `to`, in the field table's order.
