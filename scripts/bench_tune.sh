@@ -9,7 +9,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
-evaluations=${2:-120}
+evaluations=${2:-60}
 out=${3:-$(mktemp -d)/tune}
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
 echo "load before: $(uptime)"
