@@ -304,7 +304,7 @@ private:
     // of modelled cost and memory against the objective, and the front's presets.
     void writeFront(const Candidate& best) {
         sweep::Manifest m;
-        m.sweep = "tune " + opt_.preset.stem().string();
+        m.sweep = opt_.preset.stem().string();  // the chart's title starts with it: keep it short
         m.scene = input_.scene;
         m.presetDir = presetDir_;
         m.width = input_.output.width;
@@ -321,8 +321,13 @@ private:
         };
         add(input_, measured(input_, "tuned"), "input", true);
         for (const auto& [name, s] : refs_) add(s, measured(s, "tuned"), name, true);
-        for (const Candidate& c : result_.evaluated)
-            if (c.feasible && !(c.settings == input_)) add(c.settings, c.eval, &c == &best ? "tuned" : c.move, false);
+        // Labels stay short for the chart's front table: the moves that led to a point are in
+        // evaluations.jsonl and explain.md.
+        for (std::size_t i = 0; i < result_.evaluated.size(); ++i) {
+            const Candidate& c = result_.evaluated[i];
+            if (c.feasible && !(c.settings == input_))
+                add(c.settings, c.eval, &c == &best ? "tuned" : "evaluation " + std::to_string(i + 1), false);
+        }
         sweep::writeReport(opt_.outDir / "front", m, points, {opt_.objective, "model"});
     }
 
