@@ -17,6 +17,17 @@ std::string number(double v) {
 std::string metres(float v) { return csm::formatMetres(v) + " m"; }
 
 // The likeliest reason a cascade's texels are too coarse for its pixels, as a setting to change.
+constexpr int kLargestMap = 8192;  // the field table's limit of cascades.mapSize
+
+// The value to try, then the one set: "(cascades.count 5; it is 4)". Naming only the current value
+// read as the advice ("a larger cascades.mapSize (512)" for a map already of 512).
+std::string moreCascades(const CascadeSettings& c) {
+    return "more cascades (cascades.count " + std::to_string(c.count + 1) + "; it is " + std::to_string(c.count) + ")";
+}
+std::string largerMap(const CascadeSettings& c) {
+    return "a larger cascades.mapSize (" + std::to_string(c.mapSize * 2) + "; it is " + std::to_string(c.mapSize) + ")";
+}
+
 std::string likelyFix(const Settings& s, const FrameStats& stats, std::optional<float> farthestSeen) {
     const CascadeSettings& c = s.cascades;
     const bool fitted = c.depthBounds == DepthBounds::Fit && c.scheme != SplitScheme::Manual;
@@ -29,8 +40,9 @@ std::string likelyFix(const Settings& s, const FrameStats& stats, std::optional<
         return "a higher lambda (cascades.lambda " + number(c.scheme == SplitScheme::Uniform ? 0.0 : c.lambda) +
                ", scheme \"practical\"), so the near cascades get a shorter slice";
     if (!fitted && c.scheme != SplitScheme::Manual) return "cascades.depthBounds \"fit\"";
-    if (c.count < 8) return "more cascades (cascades.count " + std::to_string(c.count) + ")";
-    return "a larger cascades.mapSize (" + std::to_string(c.mapSize) + ")";
+    if (c.count < kMaxCascades) return moreCascades(c);
+    if (c.mapSize < kLargestMap) return largerMap(c);
+    return "a shorter cascades.shadowDistance (the last cascade ends at " + metres(stats.splitEnd) + ")";
 }
 
 // A texel too large for its own sake (a far cascade spread over a long slice): a shorter range
@@ -39,10 +51,11 @@ std::string texelFix(const Settings& s, const FrameStats& stats, std::optional<f
     const CascadeSettings& c = s.cascades;
     const bool fitted = c.depthBounds == DepthBounds::Fit && c.scheme != SplitScheme::Manual;
     if (!fitted && farthestSeen && stats.splitEnd > 1.5f * *farthestSeen) return likelyFix(s, stats, farthestSeen);
-    const std::string map = "a larger cascades.mapSize (" + std::to_string(c.mapSize) + ")";
+    const std::string map = c.mapSize < kLargestMap ? " or " + largerMap(c) : "";
     if (cascade + 1 == stats.cascades.size())
-        return "a shorter cascades.shadowDistance (the last cascade ends at " + metres(stats.splitEnd) + ") or " + map;
-    return "more cascades (cascades.count " + std::to_string(c.count) + ") or " + map;
+        return "a shorter cascades.shadowDistance (the last cascade ends at " + metres(stats.splitEnd) + ")" + map;
+    if (c.count < kMaxCascades) return moreCascades(c) + map;
+    return map.empty() ? "a shorter cascades.shadowDistance" : map.substr(4);
 }
 
 }  // namespace

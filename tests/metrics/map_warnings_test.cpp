@@ -56,12 +56,12 @@ TEST(MapWarningsTest, LargeTexelWarnsAgainstTheStatedSize) {
     const auto w = wastedMapWarnings(s, frame(100.0f, {0.1f, 2.0f}), density({{10, 1.0}, {10, 1.0}}), 90.0f, limits);
     ASSERT_EQ(w.size(), 1u);
     EXPECT_EQ(w[0], "cascade 1: texel 2 m is larger than 0.5 m; likely fix: a shorter cascades.shadowDistance (the last "
-                    "cascade ends at 100 m) or a larger cascades.mapSize (1024)");
+                    "cascade ends at 100 m) or a larger cascades.mapSize (2048; it is 1024)");
     // Not the last cascade: more of them, or more texels.
     const auto w3 = wastedMapWarnings(s, frame(100.0f, {2.0f, 0.1f}), density({{10, 1.0}, {10, 1.0}}), 90.0f, limits);
     ASSERT_EQ(w3.size(), 1u);
-    EXPECT_EQ(w3[0], "cascade 0: texel 2 m is larger than 0.5 m; likely fix: more cascades (cascades.count 4) or a "
-                     "larger cascades.mapSize (1024)");
+    EXPECT_EQ(w3[0], "cascade 0: texel 2 m is larger than 0.5 m; likely fix: more cascades (cascades.count 5; it is 4) "
+                     "or a larger cascades.mapSize (2048; it is 1024)");
 }
 
 TEST(MapWarningsTest, FittedRangeWithLowLambdaSuggestsAHigherLambda) {
