@@ -1,6 +1,7 @@
 #include "app/sweep_command.h"
 
 #include "app/cost_profile_file.h"
+#include "app/interrupt_watch.h"
 #include "metrics/cost_profile_json.h"
 #include "app/sweep_progress.h"
 #include "renderer/context/egl_context.h"
@@ -9,7 +10,6 @@
 #include "renderer/settings/settings_json.h"
 #include "sweep/sweep_run.h"
 
-#include <csignal>
 #include <cstdio>
 #include <stdexcept>
 #include <thread>
@@ -17,18 +17,6 @@
 namespace st::app {
 namespace fs = std::filesystem;
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-
-// First Ctrl-C: finish the current point, then stop with everything written. Second: quit now
-// (the point files already written stay; the one being measured is not written).
-extern "C" void onInterrupt(int) {
-    if (g_interrupted) {
-        std::signal(SIGINT, SIG_DFL);
-        std::raise(SIGINT);
-    }
-    g_interrupted = 1;
-}
 
 std::string machineText() {
     const std::string renderer = deviceRendererName();
@@ -49,15 +37,13 @@ int runOnce(const sweep::SweepSpec& spec, sweep::RunOptions ro, bool debugGl) {
     auto ctx = HeadlessContext::create(debugGl);
     if (debugGl) gpu::enableDebugOutput();
     ro.machine = machineText();
-    g_interrupted = 0;
-    std::signal(SIGINT, onInterrupt);
-    ro.stopRequested = [] { return g_interrupted != 0; };
+    InterruptWatch ctrlC;  // first Ctrl-C: finish the current point, then stop with everything written
+    ro.stopRequested = [] { return InterruptWatch::requested(); };
     SweepProgress progress(stderr);
     ro.progress = [&](const sweep::Progress& p) { progress(p); };
     const int before = gpu::seriousDebugMessageCount();
     const sweep::RunOutcome out = sweep::runSweep(spec, ro);
     progress.finish();
-    std::signal(SIGINT, SIG_DFL);
     std::printf("sweep %s: %zu of %zu points measured, %zu resumed; front of %zu points in %s\n", spec.name.c_str(),
                 out.measured, out.total, out.resumed, out.front.size(), (ro.outDir / "front.json").string().c_str());
     if (gpu::seriousDebugMessageCount() != before) {
@@ -66,7 +52,7 @@ int runOnce(const sweep::SweepSpec& spec, sweep::RunOptions ro, bool debugGl) {
     }
     if (out.stopped) {
         std::printf("stopped after %zu new points; run the same command again to resume\n", out.measured);
-        return g_interrupted ? 130 : 0;
+        return InterruptWatch::requested() ? 130 : 0;
     }
     return 0;
 }

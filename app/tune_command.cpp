@@ -1,6 +1,7 @@
 #include "app/tune_command.h"
 
 #include "app/cost_profile_file.h"
+#include "app/interrupt_watch.h"
 #include "metrics/cost_profile_json.h"
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
@@ -10,24 +11,13 @@
 
 #include <unistd.h>
 
-#include <csignal>
+#include <optional>
 #include <cstdio>
 #include <stdexcept>
 #include <thread>
 
 namespace st::app {
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-
-// First Ctrl-C: finish the evaluation under way (it is journaled), then stop. Second: quit now.
-extern "C" void onTuneInterrupt(int) {
-    if (g_interrupted) {
-        std::signal(SIGINT, SIG_DFL);
-        std::raise(SIGINT);
-    }
-    g_interrupted = 1;
-}
 
 // Progress on stderr: on a terminal, the evaluation lines overwrite each other (a bar with the best
 // so far); elsewhere (CI logs), every line.
@@ -81,11 +71,10 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.machine = deviceRendererName() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
         ProgressLine progress;
         to.progress = [&](const std::string& line) { progress(line); };
-        g_interrupted = 0;
-        std::signal(SIGINT, onTuneInterrupt);
-        to.stopRequested = [] { return g_interrupted != 0; };
+        std::optional<InterruptWatch> ctrlC(std::in_place);  // first Ctrl-C: finish the evaluation under way
+        to.stopRequested = [] { return InterruptWatch::requested(); };
         const tune::TuneOutcome out = tune::runTune(to);
-        std::signal(SIGINT, SIG_DFL);
+        ctrlC.reset();
         progress.finish();
         if (gpu::seriousDebugMessageCount() != before) {
             std::fprintf(stderr, "error: GL debug output reported errors during the tune\n");
@@ -96,7 +85,7 @@ int runTuneCommand(const TuneCommandOptions& opt) {
             return 1;
         }
         std::printf("%s\n", out.message.c_str());
-        if (out.stopped) return g_interrupted ? 130 : 0;
+        if (out.stopped) return InterruptWatch::requested() ? 130 : 0;
         return 0;
     } catch (const SettingsError& e) {
         for (const std::string& m : e.messages()) std::fprintf(stderr, "error: %s\n", m.c_str());
