@@ -82,6 +82,7 @@ Settings cheapest(Settings s) {
     s.cascades.blendBand = 0.0f;
     s.filter.kind = FilterKind::Hard;
     s.filter.screenSpace = ScreenSpace::Off;
+    s.filter.contact = ContactShadows::Off;
     return s;
 }
 
