@@ -34,8 +34,9 @@ tr.bad td{background:#fdd}
 tr.good td.verdict{color:#161}
 )";
 
-// The filter hides presets whose name and message do not contain the text; the sliders clip
-// the actual image over the golden one. textContent only: nothing is parsed as markup.
+// The filter hides presets whose name and message do not contain the text (index.html#filter=T
+// opens the report filtered); the sliders clip the actual image over the golden one.
+// textContent and value only: nothing is parsed as markup.
 const char* kScript = R"(
 (function(){
   var filter=document.getElementById('filter');
@@ -46,6 +47,8 @@ const char* kScript = R"(
     });
   }
   filter.addEventListener('input',apply);
+  var m=/^#filter=(.*)$/.exec(location.hash);
+  if(m){ filter.value=decodeURIComponent(m[1]); apply(); }
   document.querySelectorAll('.slider').forEach(function(d){
     var top=d.querySelector('img.top'), range=d.querySelector('input');
     function move(){ top.style.clipPath='inset(0 '+(100-range.value)+'% 0 0)'; }

@@ -102,6 +102,8 @@ else
   check "the injected name shows as text" has '&lt;img src=x onerror=alert(1)&gt;' dom.html
   check "no injected element" bash -c "! grep -q '<img src=\"x\"' dom.html && ! grep -q 'onerror=\"' dom.html"
   check "the slider is there" has 'type="range"' dom.html
+  timeout 120 "$chrome" "${flags[@]}" --dump-dom "file://$work/out/fail/index.html#filter=onerror" >filtered.html 2>>chrome.log
+  check "the filter hides the others" bash -c "grep -q '<section class=\"preset failure\" data-status=\"FAILED\" hidden=\"\">' filtered.html && grep -q '<section class=\"preset\" data-status=\"PASS\">' filtered.html"
   timeout 120 "$chrome" "${flags[@]}" --hide-scrollbars --window-size=1100,1400 --screenshot="$work/report.png" \
     "file://$work/out/fail/index.html" >>chrome.log 2>&1
   check "chromium took a screenshot" test -s report.png
