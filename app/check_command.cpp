@@ -123,8 +123,9 @@ int runCheck(const CheckCommandOptions& opt) {
         for (std::size_t i = 0; i < entries.size(); ++i) {
             results.push_back(checkOne(opt, entries[i], session, *profile, renderer, i));
             const check::PresetResult& r = results.back();
-            std::fprintf(stderr, "[%zu/%zu] %s: %s (%.1f s) %s\n", i + 1, entries.size(), r.name.c_str(),
-                         check::statusName(r.status), r.seconds, check::isFailure(r.status) ? r.message.c_str() : "");
+            const std::string why = check::isFailure(r.status) ? ": " + r.message : "";
+            std::fprintf(stderr, "[%zu/%zu] %s: %s (%.1f s)%s\n", i + 1, entries.size(), r.name.c_str(),
+                         check::statusName(r.status), r.seconds, why.c_str());
             if (opt.update) printChanges(r);
         }
     }
