@@ -102,7 +102,7 @@ void presetSection(std::ostringstream& h, const PresetResult& r) {
     if (!r.note.empty()) h << "<div class=\"note\">" << esc(r.note) << "</div>\n";
     h << "<div class=\"message\">" << esc(r.message) << "</div>\n";
     for (const std::string& n : r.notes) h << "<div class=\"message\">note: " << esc(n) << "</div>\n";
-    if (r.image) h << "<div class=\"message\">image: " << esc(r.image->summary()) << " (allowed " << esc(r.imageTolerance) << ")</div>\n";
+    if (r.image && r.message.find(r.image->summary()) == std::string::npos) h << "<div class=\"message\">image: " << esc(r.image->summary()) << " (allowed " << esc(r.imageTolerance) << ")</div>\n";
     images(h, r);
     figureTable(h, r);
     h << "</section>\n";
