@@ -23,13 +23,13 @@
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <tuple>
 
 namespace st::app {
 namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
 
 // The frame and figures of one entry, by the code paths of `render` and `measure` (the same
 // MeasureSession and metrics.json), at the suite's size.
