@@ -140,7 +140,7 @@ int runCheck(const CheckCommandOptions& opt) {
     std::size_t failures = 0;
     for (const check::PresetResult& r : results) failures += check::isFailure(r.status) ? 1 : 0;
     std::fprintf(stderr, "%zu of %zu presets failed%s\n", failures, results.size(),
-                 opt.update ? " (goldens written for the others)" : "");
+                 opt.update ? " (--update: the others' goldens written where they changed)" : "");
     return code;
 }
 
