@@ -53,8 +53,13 @@ Evaluation ViewEvaluator::measure(const Settings& s, bool heldOut) {
     for (const View& v : views_) {
         if (any && v.heldOut != heldOut) continue;
         metrics::PresetMeasurement m;
+        // The flicker along the preset's own path, measured once: with the preset camera.
+        const bool flicker = pathFlicker_ && !heldOut && &v == &views_.front() && s.path.frames > 0;
+        Settings sv = onView(s, v);
+        if (flicker) sv.path = s.path;
+        mo.flicker = flicker;
         try {
-            m = session_.measure(onView(s, v), presetDir_, mo);
+            m = session_.measure(sv, presetDir_, mo);
         } catch (const std::invalid_argument& err) {  // settings the cascade math rejects on this view
             Evaluation bad;
             bad.valid = false;

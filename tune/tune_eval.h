@@ -36,6 +36,9 @@ public:
     ViewEvaluator(metrics::MeasureSession& session, std::filesystem::path presetDir, std::vector<View> views,
                   const metrics::CostProfile& profile, Objective objective);
     void setObjective(Objective o) { objective_ = std::move(o); }
+    // With a camera path: the preset camera's view also measures the flicker F along the path
+    // (flicker.flipRate), which the tune holds as a constraint (docs/tuning.md#views).
+    void setPathFlicker(bool on) { pathFlicker_ = on; }
     const Objective& objective() const { return objective_; }
 
     // On the tuned views (those not held out): figures averaged over the views (map bytes: the
@@ -54,6 +57,7 @@ private:
     const metrics::CostProfile& profile_;
     Objective objective_;
     int measurements_ = 0;
+    bool pathFlicker_ = false;
     metrics::MeasureTimings spent_;
 };
 

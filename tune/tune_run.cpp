@@ -107,6 +107,8 @@ Settings screenSize(Settings s) {
     return s;
 }
 
+constexpr const char* kFlickerKey = "flicker.flipRate";
+
 // Ctrl-C while waiting for another shard's measurement.
 struct StoppedWhileWaiting {};
 
@@ -148,6 +150,7 @@ public:
 private:
     TuneOutcome tune(std::chrono::steady_clock::time_point t0) {
         evaluator_.emplace(session_, presetDir_, views_, *opt_.profile, Objective{opt_.objective, {}});
+        evaluator_->setPathFlicker(input_.path.frames > 0);
         screener_.emplace(session_, presetDir_, std::vector<View>{views_.front()}, *opt_.profile, Objective{opt_.objective, {}});
         resolveBudget();
         TuneOutcome out;
@@ -161,6 +164,9 @@ private:
         }
         const Evaluation inputRaw = measured(input_, "tuned");
         objective_ = {opt_.objective, artifactLimits(inputRaw.figures)};
+        // With a path, the flicker F may not get worse than the references' (the input's when none
+        // is given): a tune must not buy stills with shimmer.
+        if (input_.path.frames > 0) objective_.atMost.push_back({kFlickerKey, flickerLimit(inputRaw)});
         // The references set the budget; their artifact shares are allowed too, or a reference
         // would not be a feasible answer at its own budget.
         for (const auto& [name, r] : refs_) widenLimits(objective_, artifactLimits(measured(r, "tuned").figures));
@@ -290,6 +296,18 @@ private:
             return true;
         }
         return false;
+    }
+
+    // The flicker limit: the largest F of the references, or the input's own with none.
+    double flickerLimit(const Evaluation& input) {
+        auto f = [](const Evaluation& e) {
+            const auto it = e.figures.find(kFlickerKey);
+            return it != e.figures.end() && it->is_number() ? it->get<double>() : 0.0;
+        };
+        if (refs_.empty()) return f(input);
+        double limit = 0.0;
+        for (const auto& [name, r] : refs_) limit = std::max(limit, f(measured(r, "tuned")));
+        return limit;
     }
 
     void references() {

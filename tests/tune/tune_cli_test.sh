@@ -101,4 +101,14 @@ cost_m=$(jq '.cost.modelMs' "$work/m1/tuned/metrics.json")
 check "misclassified equals measure's ($mis_t, $mis_m)" "same '$mis_t' '$mis_m'"
 check "modelled cost equals measure's ($cost_t, $cost_m)" "same '$cost_t' '$cost_m'"
 check "within the budget ($cost_t <= $budget)" "jq -n --argjson a '$cost_t' --argjson b '$budget' '\$a <= \$b' | grep -q true"
+# A preset with a camera path: the flicker F along it is measured with every evaluation and held
+# at most at the reference's (the yard's default preset has a 16-frame path; ogldev-49 has none of
+# its own, so it flickers along the yard's).
+"$st" tune "$2/presets/default.json" --budget-from "$2/presets/ogldev-49.json" --size 64x36 --views 1 --evaluations 6 \
+  --out "$work/path" >"$work/path.log" 2>&1
+check "a tune of a preset with a path exits 0" "[[ $? -eq 0 ]]"
+f_t=$(jq '.tuned.tuned.figures["flicker.flipRate"]' "$work/path/summary.json")
+f_r=$(jq '.references["ogldev-49"].tuned.figures["flicker.flipRate"]' "$work/path/summary.json")
+check "every evaluation measures the path's flicker" "[[ \$(grep -c '\"views\":\"tuned\"' '$work/path/evaluations.jsonl') -eq \$(grep '\"views\":\"tuned\"' '$work/path/evaluations.jsonl' | grep -c 'flicker.flipRate\":[0-9]') ]]"
+check "the tuned preset flickers no more than the reference ($f_t <= $f_r)" "jq -n --argjson a '$f_t' --argjson b '$f_r' '\$a <= \$b' | grep -q true"
 exit $fail
