@@ -5,7 +5,7 @@
 //   0: ws position, w = 1 (the clear value 0 marks pixels with no surface)
 //   1: ws shading normal, facing the viewer as main.frag lights it; w = N.L
 //   2: x unfiltered test (one nearest compare in the selected cascade with the preset's bias,
-//      no blend band), y filtered factor (the preset's filter and blend band, as main.frag
+//      receiver-plane bias included; no blend band), y filtered factor (the preset's filter and blend band, as main.frag
 //      shades; with filter.screenSpace the upsampled mask main.frag reads), z cascade (-1
 //      beyond the shadow range), w screen pixels per texel
 //   3: the triangle's own (geometric) normal, on the viewer's side like the shading normal;
@@ -37,7 +37,8 @@ void main() {
     ShadowResult s = screenShadow != 0 ? screenShadowFactor(vWsPosition, n, vVsDepth)
                                        : shadowFactor(vWsPosition, n, nDotL, vVsDepth);
     int ci = max(s.cascade, 0);
-    float hard = hardShadow(ci, shadowCoord(ci, vWsPosition, n), tanToLight(nDotL));
+    vec2 dzduv = receiverPlane != 0 ? receiverPlaneSlope(ci, wsDx, wsDy) : vec2(0.0);
+    float hard = hardShadow(ci, shadowCoord(ci, vWsPosition, n), tanToLight(nDotL), dzduv);
     mat2 j = texelJacobian(ci, wsDx, wsDy);
     bool inRange = s.cascade >= 0;
     oPosition = vec4(vWsPosition, 1.0);

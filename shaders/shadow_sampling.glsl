@@ -147,17 +147,20 @@ float biasedDepth(int i, float tsZ, float tanTheta) {
     return min(tsZ - biasMetres / cascade[i].depthRange, 1.0);
 }
 
-// The unfiltered test: one nearest-texel compare with the bias, whatever the filter setting.
-// The accuracy metrics score this against the ray-cast ground truth
-// (docs/architecture.md#misclassification).
-float hardShadow(int i, vec3 ts, float tanTheta) {
-    return compareNearest(i, ts.xy, biasedDepth(i, ts.z, tanTheta));
-}
-
 // The reference depth of a tap at uv, for a receiver at ts.xy of depth z: on the receiver's plane
 // with receiver-plane bias, else z.
 float tapDepth(vec2 uv, vec2 at, float z, vec2 dzduv) {
     return receiverPlane != 0 ? z + dot(uv - at, dzduv) : z;
+}
+
+// The unfiltered test: one nearest-texel compare with the bias, whatever the filter setting; with
+// receiver-plane bias (a bias, not a filter) against the receiver's depth at that texel's centre,
+// as every filter compares it. The accuracy metrics score this against the ray-cast ground truth
+// (docs/architecture.md#misclassification). dzduv: receiverPlaneSlope(), or 0 without the bias.
+float hardShadow(int i, vec3 ts, float tanTheta, vec2 dzduv) {
+    vec2 t = cascade[i].uvPerTexel.xy;
+    vec2 centre = (floor(ts.xy / t) + 0.5) * t;
+    return compareNearest(i, ts.xy, tapDepth(centre, ts.xy, biasedDepth(i, ts.z, tanTheta), dzduv));
 }
 
 // One nearest compare; with receiver-plane bias against the receiver's depth at the centre of the
