@@ -96,7 +96,9 @@ void EditorSession::handleInput() {
     GLFWwindow* w = window_.handle();
     auto key = [w](int k) { return glfwGetKey(w, k) == GLFW_PRESS; };
     FlyInput in;
-    in.dt = io.DeltaTime;
+    // After a wait for events the frame's time step spans the wait: the fly takes at most a
+    // quarter second of it, so the first step of a key pressed after a pause is not a leap.
+    in.dt = std::min(io.DeltaTime, 0.25f);
     if (!io.WantCaptureMouse) {
         in.mouseDelta = {io.MouseDelta.x, io.MouseDelta.y};
         in.look = io.MouseDown[1];
@@ -372,7 +374,11 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
         glfwSetCursorPos(window_.handle(), opt_.hover[0], opt_.hover[1]);
     }
     window_.beginFrame();
+    const unsigned long events = window_.eventCount();
+    bool newEvents = events != lastEvents_ || window_.inputQueued();
+    lastEvents_ = events;
     if (window_.shouldClose()) {  // the close button asks the panels first (unsaved changes)
+        newEvents = true;  // Ctrl+C is no GLFW event: the frames that answer it must follow
         window_.cancelClose();
         ui_->requestQuit();
     }
@@ -382,8 +388,10 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     applyRequests(requests);
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
+    bool sceneRendered = false;
     if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
         const bool rendered = renderScene(requests, final);
+        sceneRendered = !sceneReused_;
         updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
         updateProbe(requests, rendered);
         present();
@@ -396,6 +404,34 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     frameMs_.push_back(cpuFrameMs_);
     frameCpuMs_.push_back(processCpuMs() - cpu0);
+    noteActivity(newEvents, sceneRendered, requests);
+}
+
+std::string EditorSession::shownState() const {
+    auto accuracyState = [](const EditorAccuracy& a) {
+        const ui::AccuracyView v = a.view();
+        return std::to_string(int(v.state)) + v.phase + std::to_string(v.seconds) + v.error;
+    };
+    const ui::SweepView& sweep = sweep_->view();
+    return status_ + '\n' + ui_->windowTitle() + '\n' + accuracyState(*accuracy_) + '\n' +
+           (accuracyA_ ? accuracyState(*accuracyA_) : "") + '\n' + std::to_string(int(sweep.state)) + ' ' +
+           std::to_string(sweep.done) + ' ' + std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size());
+}
+
+void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRequests& r) {
+    std::string shown = shownState();
+    activity_.events = events;
+    activity_.changed = sceneRendered || r.change != ChangeClass::None || shown != lastShown_;
+    lastShown_ = std::move(shown);
+    // A held key repeats (ImGui's key repeat, the fly's WASD) and a held button may repeat (a
+    // step button) or drag: both act without new events. A scripted orbit turns every frame.
+    const ImGuiIO& io = ImGui::GetIO();
+    bool keyDown = false;  // a modifier held alone does nothing by itself
+    for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k)
+        keyDown |= io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER);
+    const bool buttonDown = std::find(std::begin(io.MouseDown), std::end(io.MouseDown), true) != std::end(io.MouseDown);
+    activity_.animating = keyDown || buttonDown || opt_.orbitDegPerFrame != 0.0f;
+    activity_.jobRunning = accuracy_->busy() || (split_ && accuracyA_ && accuracyA_->busy()) || sweep_->running();
 }
 
 void EditorSession::writeSceneShot(const fs::path& file) const {

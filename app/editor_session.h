@@ -8,6 +8,7 @@
 #include "app/editor_sweep.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
+#include "app/frame_pacer.h"
 #include "app/view_actions.h"
 #include "app/scene_probe.h"
 #include "app/scene_frame.h"
@@ -42,6 +43,9 @@ public:
     // display pixels from the top left, as the last frame placed them.
     void writeLayoutReport(const std::filesystem::path& file) const;
     const EditorAccuracy& accuracy() const { return *accuracy_; }
+    // What the last frame saw, for the FramePacer: events, changes, animation, jobs.
+    const FrameActivity& activity() const { return activity_; }
+    int framesDrawn() const { return int(frameMs_.size()); }
     int exitCode() const { return exitCode_; }
 
 private:
@@ -65,6 +69,9 @@ private:
     ui::UiInputs uiInputs();
     void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
+    // The last frame's activity (FramePacer): `events`, whether the scene image was rendered.
+    void noteActivity(bool events, bool sceneRendered, const ui::UiRequests& r);
+    std::string shownState() const;  // what changes on screen without a scene render: messages, jobs
 
     EditorWindow& window_;
     EditorOptions opt_;
@@ -130,6 +137,9 @@ private:
     std::unique_ptr<EditorAccuracy> accuracyA_;  // A's own ground-truth job
     std::unique_ptr<EditorSweep> sweep_;
     std::vector<std::string> sweepable_;         // sweep::isSweepable over the field table
+    FrameActivity activity_;
+    unsigned long lastEvents_ = 0;  // EditorWindow::eventCount() at the previous frame
+    std::string lastShown_;         // shownState() at the previous frame
 };
 
 }  // namespace st::app
