@@ -91,6 +91,8 @@ UiRequests EditorUi::draw(Settings& s, const UiInputs& in) {
     drawPanels(f);
     ImGui::PopAllowKeyboardFocus();
     trackEditGesture(f, beforeWidgets);
+    // Undo, redo, a load or Revert replaced the values a refusal was about (issue 21 #11).
+    if (f.replaced) f.state.fieldEdits = {};
     finishFrame(f, atStart);
     return req;
 }

@@ -163,6 +163,27 @@ TEST_F(CompareUiTest, ClickingAChartPointAppliesItsValuesAsOneUndoStep) {
     EXPECT_EQ(d.s, before);  // and there was no other step
 }
 
+// Issue 21 #11: "applied lambda=0.95" and the chart stayed after the camera moved.
+TEST_F(CompareUiTest, TheChartAndTheAppliedNoteGoStaleWhenTheViewMoves) {
+    openSweepPanel();
+    ui::SweepView v = doneView();
+    v.measuredFrom = d.s;
+    d.in.sweep = &v;
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("sweep.stale"));
+    d.click("sweep.point.1");
+    d.frames(2);
+    EXPECT_TRUE(d.drawn("sweep.applied"));
+    EXPECT_FALSE(d.drawn("sweep.stale")) << "applying a point changes no camera";
+    d.s.bias.slope += 0.5f;  // another edit: the note no longer describes the settings
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("sweep.applied"));
+    d.s.camera.position.x += 3.0f;  // the app's fly gesture
+    d.frames(2);
+    EXPECT_TRUE(d.drawn("sweep.stale"));
+    EXPECT_TRUE(d.drawn("sweep.point.1")) << "still there to read, greyed";
+}
+
 TEST_F(CompareUiTest, ACancelledSweepLeavesTheDocumentAsItWas) {
     openSweepPanel();
     ui::SweepView v = doneView();

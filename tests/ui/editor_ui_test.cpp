@@ -137,6 +137,30 @@ TEST_F(EditorUiTest, TypedNumbersApplyOnEnterOrFocusLossNotPerKeystroke) {
 }
 
 // Issue 13 #7: "filter size -5 becomes 3".
+// Issue 21 #11: "9 is outside 1 .. 8: not applied" outlived the values it was about.
+TEST_F(EditorUiTest, ARefusalGoesWithUndoAndWithALoad) {
+    d.ui().setDocument(d.s, scratch.path / "mine.json");
+    st::savePresetAtomic(d.s, scratch.path / "mine.json");
+    d.in.presetFiles = {scratch.path / "mine.json"};
+    dragElevation();  // something to undo
+    const auto refuse = [&] {
+        d.ctrlClick(d.rect("cascades.count").center());
+        d.typeText("9");
+        d.pressKey(kKeyEnter);
+        d.frame();
+        return d.drawn("cascades.count#refused");
+    };
+    ASSERT_TRUE(refuse());
+    d.pressKey(kKeyZ, true);
+    d.frame();
+    EXPECT_FALSE(d.drawn("cascades.count#refused")) << "undo replaced the settings";
+    ASSERT_TRUE(refuse());
+    EXPECT_FALSE(d.ui().dirty());
+    d.click("preset:mine.json");
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("cascades.count#refused")) << "the preset was loaded again";
+}
+
 TEST_F(EditorUiTest, ANegativeFilterSizeTypedIntoItsBoxIsRefused) {
     d.s.filter.kind = FilterKind::PcfNxN;
     d.s.filter.size = 5;
