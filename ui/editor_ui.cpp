@@ -50,12 +50,12 @@ void drawPanels(UiFrame& f) {
         drawSplitBar(f);
     }
     drawSceneLegends(f);
-    drawProbe(f);
     drawStatusBar(f);
     drawCompare(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
     drawConfirmMapCost(f);
+    drawProbe(f);  // last: a popup opened this frame stops it
 }
 
 void finishFrame(UiFrame& f, const Settings& atStart) {
