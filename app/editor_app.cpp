@@ -20,7 +20,7 @@ constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end
 
 void writeStatus(const std::filesystem::path& file, const EditorSession& session, bool idle) {
     const nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
-                           {"accuracy", session.accuracy().summary()}};
+                           {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()}};
     writeTextAtomic(file, j.dump() + "\n");
 }
 

@@ -210,15 +210,18 @@ SceneFrameInputs EditorSession::sceneInputs(int width, int height, bool interact
 bool EditorSession::renderScene(const ui::UiRequests& r, bool final) {
     const bool moving = (previousValid_ && viewMoving(*previousValid_, valid_));
     previousValid_ = valid_;
-    // The split renders every frame at full size (renderA says why).
+    // The split renders at full size, and every frame while A's own Accuracy job is on its way
+    // (renderA says why); once A's figures are in, a frame that changed nothing reuses both
+    // halves (issue 21 #10: it rendered every frame, 5 fps with nothing touched).
     const bool splitShown = split_ && !swapped_;
+    const bool aFiguresPending = splitShown && (!accuracyA_ || accuracyA_->busy());
     const bool scalable = !final && !splitShown;
     const bool interactive = moving && scalable;
     const double scale = interactive_.update(interactive, cpuFrameMs_);
     const int width = interactive ? scaledSize(sceneWidth_, scale) : sceneWidth_;
     const int height = interactive ? scaledSize(sceneHeight_, scale) : sceneHeight_;
     const SceneFrameInputs in = sceneInputs(width, height, interactive);
-    sceneReused_ = !splitShown && frameCache_.check(in).empty();
+    sceneReused_ = !aFiguresPending && frameCache_.check(in).empty();
     if (sceneReused_) {
         ++reusedFrames_;
     } else {

@@ -46,6 +46,7 @@ public:
     // What the last frame saw, for the FramePacer: events, changes, animation, jobs.
     const FrameActivity& activity() const { return activity_; }
     int framesDrawn() const { return int(frameMs_.size()); }
+    bool splitShown() const { return split_ && !swapped_; }  // the A/B split is on screen
     int exitCode() const { return exitCode_; }
 
 private:

@@ -1,6 +1,7 @@
 // Issue 21 #2 on the real window under Xvfb: once the editor has settled (the scene drawn, the
 // Accuracy panel's figures in), it draws no frame until something happens: none in 2 s of
-// nobody touching it; a mouse move over the window wakes it, and Ctrl+C still closes it.
+// nobody touching it; a mouse move over the window wakes it, and Ctrl+C still closes it. The
+// A/B split settles the same way once A's figures are in.
 // Frames are counted by the editor (--status-file), not timed.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,13 @@ TEST(EditorIdleTest, ASettledEditorDrawsNothingUntilAnEventComes) {
            "cp '" << status.string() << "' idle-end.json\n"
            "xdotool mousemove 500 350; sleep 0.2; xdotool mousemove 520 360; sleep 1\n"
            "cp '" << status.string() << "' woken.json\n"
+           // Compare > Set as A (Ctrl+Shift+A) turns the split on: once A's figures are in, it idles too.
+           "xdotool keydown ctrl keydown shift; sleep 0.3; xdotool keydown a; sleep 0.3; xdotool keyup a; sleep 0.1; "
+           "xdotool keyup shift keyup ctrl; sleep 0.5\n"
+           "for i in $(seq 3000); do grep -q '\"idle\": *true' '" << status.string() << "' && break; sleep 0.1; done\n"
+           "cp '" << status.string() << "' split-start.json\n"
+           "sleep 1\n"
+           "cp '" << status.string() << "' split-end.json\n"
            "kill -INT $pid\n"
            "for i in $(seq 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done\n"
            "kill -0 $pid 2>/dev/null && { kill -KILL $pid; exit 102; }\n"
@@ -61,5 +69,11 @@ TEST(EditorIdleTest, ASettledEditorDrawsNothingUntilAnEventComes) {
     EXPECT_EQ(end.value("frames", -1), start.value("frames", -2)) << "frames drawn while nothing happened";
     EXPECT_TRUE(end.value("idle", false));
     EXPECT_GT(woken.value("frames", 0), end.value("frames", 0)) << "a mouse move over the window did not wake it";
+    // Issue 21 #10: the A/B split rendered every frame with nothing touched.
+    const nlohmann::json splitStart = readJson(dir / "split-start.json"), splitEnd = readJson(dir / "split-end.json");
+    ASSERT_TRUE(splitStart.is_object() && splitEnd.is_object());
+    EXPECT_TRUE(splitStart.value("split", false)) << "Ctrl+Shift+A did not turn the split on: " << splitStart.dump();
+    EXPECT_TRUE(splitStart.value("idle", false)) << "the split never settled: " << splitStart.dump();
+    EXPECT_EQ(splitEnd.value("frames", -1), splitStart.value("frames", -2)) << "frames drawn with the split on and nothing touched";
     if (!::testing::Test::HasFailure()) fs::remove_all(dir);
 }

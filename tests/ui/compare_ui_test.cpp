@@ -83,6 +83,28 @@ TEST_F(CompareUiTest, SetAsASnapshotsTheSettingsAndTurnsTheSplitOn) {
     EXPECT_FALSE(d.drawn("ab.divider"));
 }
 
+// Issue 21 #10: with the divider near the scene's edge a label ran under the panel ("live: 1.089").
+TEST_F(CompareUiTest, TheLabelsStayInsideTheSceneWithTheDividerAtAnEdge) {
+    d.click("menu.compare");
+    d.frame();
+    d.click("menu.compare.setA");
+    d.frames(2);
+    ASSERT_TRUE(d.last.abSplit);
+    const float left = d.last.scenePos.x, right = left + d.last.sceneSize.x;
+    for (const float to : {right + 50.0f, left - 50.0f}) {
+        const ImVec2 grip = d.rect("ab.divider").center();
+        d.drag(grip, {to, grip.y});
+        d.frames(2);
+        const ui::ItemRect a = d.rect("ab.labelA"), live = d.rect("ab.labelLive");
+        EXPECT_GE(a.min.x, left) << "divider " << d.last.abDivider;
+        EXPECT_LE(live.max.x, right) << "divider " << d.last.abDivider;
+        EXPECT_LE(a.max.x, right);
+        EXPECT_GE(live.min.x, left);
+        const bool apart = a.max.x <= live.min.x || live.max.x <= a.min.x || a.max.y <= live.min.y || live.max.y <= a.min.y;
+        EXPECT_TRUE(apart) << "the labels overlap";
+    }
+}
+
 TEST_F(CompareUiTest, DraggingTheDividerMovesItAndNotTheSettings) {
     d.click("menu.compare");
     d.frame();
