@@ -19,8 +19,10 @@ namespace {
 constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end even if the job hangs
 
 void writeStatus(const std::filesystem::path& file, const EditorSession& session, bool idle) {
-    const nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
+    nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
                            {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()}};
+    const CameraSettings& c = session.camera();
+    j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}}};
     writeTextAtomic(file, j.dump() + "\n");
 }
 

@@ -110,16 +110,24 @@ void EditorSession::handleInput() {
         in.right = key(GLFW_KEY_D), in.down = key(GLFW_KEY_Q), in.up = key(GLFW_KEY_E);
     }
     const CameraSettings before = settings_.camera;
+    // Alt + left drag orbits the main camera around the point under the cursor where it began.
+    if (!io.MouseDown[0]) orbiting_ = false;
+    if (!swapped_ && !io.WantCaptureMouse && io.KeyAlt && io.MouseClicked[0]) {
+        orbiting_ = true;
+        orbitPivot_ = pickedPoint(io.MousePos);
+    }
     if (swapped_ && !io.WantCaptureMouse) {  // full-window side camera: left mouse orbits, wheel zooms
         if (io.MouseDown[0]) orbit_.yawDeg -= io.MouseDelta.x * 0.3f, orbit_.pitchDeg += io.MouseDelta.y * 0.3f;
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
+    } else if (orbiting_) {
+        orbitCamera(settings_.camera, orbitPivot_, {io.MouseDelta.x, io.MouseDelta.y});
     } else if (in.look || in.pan || in.wheel != 0.0f) {
         // Only then: re-deriving the target from the position each frame drifts by rounding,
         // and every drift would be an undo step.
         updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
     }
     // A fly or pan gesture is one undo step (issue 13 #4).
-    if (auto start = cameraGesture_.update(before, settings_.camera, in.look || in.pan)) {
+    if (auto start = cameraGesture_.update(before, settings_.camera, in.look || in.pan || orbiting_)) {
         Settings atStart = settings_;
         atStart.camera = *start;
         ui_->recordEdit(atStart, settings_);
@@ -129,6 +137,18 @@ void EditorSession::handleInput() {
         const glm::vec3 d = settings_.camera.position - settings_.camera.target;
         settings_.camera.position = settings_.camera.target + glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z);
     }
+}
+
+// The surface point under `mouse` (display pixels) in the probe's last read-back, else the
+// camera's target: the orbit's pivot.
+glm::vec3 EditorSession::pickedPoint(ImVec2 mouse) const {
+    const MeasureSamples* m = probe_.samples();
+    const ImGuiIO& io = ImGui::GetIO();
+    const int x = int(std::floor((mouse.x - scenePos_.x) * io.DisplayFramebufferScale.x));
+    const int y = int(std::floor((mouse.y - scenePos_.y) * io.DisplayFramebufferScale.y));
+    if (!m || x < 0 || y < 0 || x >= m->width || y >= m->height) return settings_.camera.target;
+    const std::size_t i = std::size_t(y) * std::size_t(m->width) + std::size_t(x);
+    return m->covered(i) ? glm::vec3(m->position[i]) : settings_.camera.target;
 }
 
 void EditorSession::applyRequests(const ui::UiRequests& r) {

@@ -46,6 +46,7 @@ public:
     // What the last frame saw, for the FramePacer: events, changes, animation, jobs.
     const FrameActivity& activity() const { return activity_; }
     int framesDrawn() const { return int(frameMs_.size()); }
+    const CameraSettings& camera() const { return settings_.camera; }
     bool splitShown() const { return split_ && !swapped_; }  // the A/B split is on screen
     int exitCode() const { return exitCode_; }
 
@@ -54,6 +55,7 @@ private:
     std::string checkScene(const std::string& spec, bool ground, const std::filesystem::path& baseDir);
     std::filesystem::path sceneBase() const;  // what relative scene paths are relative to
     void handleInput();
+    glm::vec3 pickedPoint(ImVec2 mouse) const;
     void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
     // s: sized and viewed; pipScale: of the picture-in-picture's size. false: the settings
@@ -102,6 +104,8 @@ private:
     FlyState fly_;
     CameraGesture cameraGesture_;
     OrbitCamera orbit_;
+    bool orbiting_ = false;             // an Alt + left drag of the main camera is going on
+    glm::vec3 orbitPivot_{0.0f};        // ... around this point
     bool swapped_ = false;   // side view full window, main camera in the corner
     bool quit_ = false;
     int exitCode_ = 0;
