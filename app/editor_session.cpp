@@ -111,7 +111,6 @@ void EditorSession::handleInput() {
     }
     const CameraSettings before = settings_.camera;
     // Alt + left drag orbits the main camera around the point under the cursor where it began.
-    if (!io.MouseDown[0]) orbiting_ = false;
     if (!swapped_ && !io.WantCaptureMouse && io.KeyAlt && io.MouseClicked[0]) {
         orbiting_ = true;
         orbitPivot_ = pickedPoint(io.MousePos);
@@ -121,6 +120,9 @@ void EditorSession::handleInput() {
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
     } else if (orbiting_) {
         orbitCamera(settings_.camera, orbitPivot_, {io.MouseDelta.x, io.MouseDelta.y});
+        // Ended after its movement is taken: the mouse queue may put the last moves and the
+        // release in one frame, and that frame's movement belongs to the drag.
+        if (!io.MouseDown[0]) orbiting_ = false;
     } else if (in.look || in.pan || in.wheel != 0.0f) {
         // Only then: re-deriving the target from the position each frame drifts by rounding,
         // and every drift would be an undo step.

@@ -18,6 +18,18 @@
 namespace fs = std::filesystem;
 
 namespace {
+// Shell for the drive scripts: `settled FILE` waits until the editor is idle, having drawn a frame
+// since FILE was copied (under load the status file may still hold the idle state from before the
+// input); `settled` alone waits for the first idle state.
+const char* kSettled =
+    "frames() { sed -n 's/.*\"frames\": *\\([0-9]*\\).*/\\1/p' \"$1\" 2>/dev/null; }\n"
+    "settled() {\n"
+    "  for i in $(seq 3000); do\n"
+    "    if grep -q '\"idle\": *true' status.json 2>/dev/null && { [ $# -eq 0 ] || [ \"$(frames status.json)\" != \"$(frames \"$1\")\" ]; }; then return; fi\n"
+    "    sleep 0.1\n"
+    "  done\n"
+    "}\n";
+
 nlohmann::json readJson(const fs::path& file) {
     std::ifstream in(file);
     return nlohmann::json::parse(in, nullptr, false);
@@ -34,11 +46,11 @@ TEST(EditorIdleTest, ASettledEditorDrawsNothingUntilAnEventComes) {
     const fs::path status = dir / "status.json";
     // Copies of the status file taken at the moments the test compares (the editor rewrites it).
     std::ofstream(dir / "drive.sh")
-        << "set -u\n"
-           "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" << status.string()
+        << "set -u\n" << kSettled
+        << "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" << status.string()
         << "' > '" << (dir / "editor.txt").string() << "' 2>&1 &\n"
            "pid=$!\n"
-           "for i in $(seq 3000); do grep -q '\"idle\": *true' '" << status.string() << "' 2>/dev/null && break; sleep 0.1; done\n"
+           "settled\n"
            "cp '" << status.string() << "' idle-start.json\n"
            "sleep 2\n"
            "cp '" << status.string() << "' idle-end.json\n"
@@ -47,7 +59,7 @@ TEST(EditorIdleTest, ASettledEditorDrawsNothingUntilAnEventComes) {
            // Compare > Set as A (Ctrl+Shift+A) turns the split on: once A's figures are in, it idles too.
            "xdotool keydown ctrl keydown shift; sleep 0.3; xdotool keydown a; sleep 0.3; xdotool keyup a; sleep 0.1; "
            "xdotool keyup shift keyup ctrl; sleep 0.5\n"
-           "for i in $(seq 3000); do grep -q '\"idle\": *true' '" << status.string() << "' && break; sleep 0.1; done\n"
+           "settled woken.json\n"
            "cp '" << status.string() << "' split-start.json\n"
            "sleep 1\n"
            "cp '" << status.string() << "' split-end.json\n"
@@ -92,22 +104,20 @@ TEST(EditorOrbitTest, AltDragOrbitsTheCamera) {
     fs::create_directories(dir / "config" / "shadowtune");
     std::ofstream(dir / "config" / "shadowtune" / "window.json") << R"({"width": 1000, "height": 700})";
     const fs::path status = dir / "status.json";
-    const std::string waitIdle = "for i in $(seq 3000); do grep -q '\"idle\": *true' '" + status.string() +
-                                 "' 2>/dev/null && break; sleep 0.1; done\n";
     std::ofstream(dir / "drive.sh")
-        << "set -u\n"
-           "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" << status.string()
+        << "set -u\n" << kSettled
+        << "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" << status.string()
         << "' > '" << (dir / "editor.txt").string() << "' 2>&1 &\n"
            "pid=$!\n"
-        << waitIdle
-        << "cp '" << status.string() << "' before.json\n"
+           "settled\n"
+           "cp '" << status.string() << "' before.json\n"
            // Over the scene viewport (1000x700: the columns leave x 340..740), resting so the probe reads it.
            "xdotool mousemove 540 200; sleep 1\n"
            "xdotool keydown alt; sleep 0.3; xdotool mousedown 1; sleep 0.3\n"
            "for i in $(seq 10); do xdotool mousemove_relative 10 0; sleep 0.05; done\n"
            "sleep 0.3; xdotool mouseup 1; sleep 0.2; xdotool keyup alt; sleep 0.5\n"
-        << waitIdle
-        << "cp '" << status.string() << "' after.json\n"
+           "settled before.json\n"
+           "cp '" << status.string() << "' after.json\n"
            "kill -KILL $pid; wait $pid; exit 0\n";
     const std::string cmd = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
                             "' xvfb-run -a -s '-screen 0 1280x800x24' bash drive.sh > drive.txt 2>&1";
