@@ -69,9 +69,15 @@ std::vector<std::string> wastedMaps(const csm::CascadePlan& plan, const Settings
 
 EditorAccuracy::EditorAccuracy() : worker_(rayThreads()) {}
 
+bool EditorAccuracy::busy() const {
+    const AccuracySchedule::State state = schedule_.state();
+    return measurable_ && (state == AccuracySchedule::State::Settling || state == AccuracySchedule::State::Computing);
+}
+
 void EditorAccuracy::update(double now, bool wanted, bool rendered, Renderer& r, const Settings& s,
                             const std::shared_ptr<const Scene>& scene) {
     wanted_ = wanted;
+    measurable_ = wanted && rendered;
     const bool changed = !wanted || !rendered || !last_ || *last_ != s;
     last_ = s;
     switch (schedule_.update(now, changed)) {

@@ -33,6 +33,9 @@ public:
     GLuint overlay() const;  // 0 unless the figures describe the frame of the last update()
     bool finished() const;   // the last job ended (done or failed): scripted runs wait for it
     bool done() const { return schedule_.state() == AccuracySchedule::State::Done; }
+    // Figures are on their way for the frame on screen (settling or computing): the window must
+    // keep polling. False once they are in, or when they are not wanted or the frame cannot be measured.
+    bool busy() const;
     std::string summary() const;  // one line: state and the frame's figures
     // Per pixel of the frame measured (the hover probe's truth); nullptr unless done.
     const std::vector<metrics::PixelClass>* classes() const { return done() ? &classes_ : nullptr; }
@@ -47,6 +50,7 @@ private:
     ImageTexture overlay_;
     std::optional<Settings> last_;       // the previous frame's settings, to see a change
     bool wanted_ = false;
+    bool measurable_ = false;            // wanted, and the last update's frame was rendered
     double readBackSeconds_ = 0.0;       // of the job in flight
     std::vector<std::string> pendingWarnings_;  // of the job in flight
     metrics::SunDisc sun_;               // the disc of the job in flight

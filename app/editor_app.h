@@ -15,6 +15,11 @@ struct EditorOptions {
     float orbitDegPerFrame = 0.0f;  // scripted camera motion: turn around the target about +Y (benchmarks)
     std::vector<int> hover;  // {x, y}: the mouse is put there every frame (scripted probe screenshots)
     std::optional<std::filesystem::path> layoutReport;  // JSON: the scene viewport and every panel's rectangle
+    // Rewritten after every frame: {"pid", "frames" drawn, "idle": the editor waits for an event,
+    // drawing nothing, "accuracy": the Accuracy panel's summary line, "split": the A/B split is
+    // shown}. What tests and the idle
+    // benchmark watch.
+    std::optional<std::filesystem::path> statusFile;
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures
     bool debugContext = false;
 };

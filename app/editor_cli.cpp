@@ -23,6 +23,9 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
         ->check(CLI::Range(-45.0f, 45.0f));
     editor->add_option("--layout-report", opt->layoutReport,
                        "Write the scene viewport's and the panels' and widgets' rectangles (JSON) after the last frame");
+    editor->add_option("--status-file", opt->statusFile,
+                       "Rewrite this JSON after every frame: the process id, frames drawn, and whether the editor is idle "
+                       "(waiting for input, drawing nothing)");
     editor->add_flag("--wait-accuracy", opt->waitAccuracy,
                      "With --frames: keep drawing until the Accuracy panel shows its figures, then print them");
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");

@@ -96,7 +96,9 @@ void EditorSession::handleInput() {
     GLFWwindow* w = window_.handle();
     auto key = [w](int k) { return glfwGetKey(w, k) == GLFW_PRESS; };
     FlyInput in;
-    in.dt = io.DeltaTime;
+    // After a wait for events the frame's time step spans the wait: the fly takes at most a
+    // quarter second of it, so the first step of a key pressed after a pause is not a leap.
+    in.dt = std::min(io.DeltaTime, 0.25f);
     if (!io.WantCaptureMouse) {
         in.mouseDelta = {io.MouseDelta.x, io.MouseDelta.y};
         in.look = io.MouseDown[1];
@@ -108,16 +110,26 @@ void EditorSession::handleInput() {
         in.right = key(GLFW_KEY_D), in.down = key(GLFW_KEY_Q), in.up = key(GLFW_KEY_E);
     }
     const CameraSettings before = settings_.camera;
+    // Alt + left drag orbits the main camera around the point under the cursor where it began.
+    if (!swapped_ && !io.WantCaptureMouse && io.KeyAlt && io.MouseClicked[0]) {
+        orbiting_ = true;
+        orbitPivot_ = pickedPoint(io.MousePos);
+    }
     if (swapped_ && !io.WantCaptureMouse) {  // full-window side camera: left mouse orbits, wheel zooms
         if (io.MouseDown[0]) orbit_.yawDeg -= io.MouseDelta.x * 0.3f, orbit_.pitchDeg += io.MouseDelta.y * 0.3f;
         orbit_.zoom = std::clamp(orbit_.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
+    } else if (orbiting_) {
+        orbitCamera(settings_.camera, orbitPivot_, {io.MouseDelta.x, io.MouseDelta.y});
+        // Ended after its movement is taken: the mouse queue may put the last moves and the
+        // release in one frame, and that frame's movement belongs to the drag.
+        if (!io.MouseDown[0]) orbiting_ = false;
     } else if (in.look || in.pan || in.wheel != 0.0f) {
         // Only then: re-deriving the target from the position each frame drifts by rounding,
         // and every drift would be an undo step.
         updateFlyCamera(settings_.camera, fly_, in, scene_->wsBounds);
     }
     // A fly or pan gesture is one undo step (issue 13 #4).
-    if (auto start = cameraGesture_.update(before, settings_.camera, in.look || in.pan)) {
+    if (auto start = cameraGesture_.update(before, settings_.camera, in.look || in.pan || orbiting_)) {
         Settings atStart = settings_;
         atStart.camera = *start;
         ui_->recordEdit(atStart, settings_);
@@ -127,6 +139,18 @@ void EditorSession::handleInput() {
         const glm::vec3 d = settings_.camera.position - settings_.camera.target;
         settings_.camera.position = settings_.camera.target + glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z);
     }
+}
+
+// The surface point under `mouse` (display pixels) in the probe's last read-back, else the
+// camera's target: the orbit's pivot.
+glm::vec3 EditorSession::pickedPoint(ImVec2 mouse) const {
+    const MeasureSamples* m = probe_.samples();
+    const ImGuiIO& io = ImGui::GetIO();
+    const int x = int(std::floor((mouse.x - scenePos_.x) * io.DisplayFramebufferScale.x));
+    const int y = int(std::floor((mouse.y - scenePos_.y) * io.DisplayFramebufferScale.y));
+    if (!m || x < 0 || y < 0 || x >= m->width || y >= m->height) return settings_.camera.target;
+    const std::size_t i = std::size_t(y) * std::size_t(m->width) + std::size_t(x);
+    return m->covered(i) ? glm::vec3(m->position[i]) : settings_.camera.target;
 }
 
 void EditorSession::applyRequests(const ui::UiRequests& r) {
@@ -208,15 +232,18 @@ SceneFrameInputs EditorSession::sceneInputs(int width, int height, bool interact
 bool EditorSession::renderScene(const ui::UiRequests& r, bool final) {
     const bool moving = (previousValid_ && viewMoving(*previousValid_, valid_));
     previousValid_ = valid_;
-    // The split renders every frame at full size (renderA says why).
+    // The split renders at full size, and every frame while A's own Accuracy job is on its way
+    // (renderA says why); once A's figures are in, a frame that changed nothing reuses both
+    // halves (issue 21 #10: it rendered every frame, 5 fps with nothing touched).
     const bool splitShown = split_ && !swapped_;
+    const bool aFiguresPending = splitShown && (!accuracyA_ || accuracyA_->busy());
     const bool scalable = !final && !splitShown;
     const bool interactive = moving && scalable;
     const double scale = interactive_.update(interactive, cpuFrameMs_);
     const int width = interactive ? scaledSize(sceneWidth_, scale) : sceneWidth_;
     const int height = interactive ? scaledSize(sceneHeight_, scale) : sceneHeight_;
     const SceneFrameInputs in = sceneInputs(width, height, interactive);
-    sceneReused_ = !splitShown && frameCache_.check(in).empty();
+    sceneReused_ = !aFiguresPending && frameCache_.check(in).empty();
     if (sceneReused_) {
         ++reusedFrames_;
     } else {
@@ -372,7 +399,11 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
         glfwSetCursorPos(window_.handle(), opt_.hover[0], opt_.hover[1]);
     }
     window_.beginFrame();
+    const unsigned long events = window_.eventCount();
+    bool newEvents = events != lastEvents_ || window_.inputQueued();
+    lastEvents_ = events;
     if (window_.shouldClose()) {  // the close button asks the panels first (unsaved changes)
+        newEvents = true;  // Ctrl+C is no GLFW event: the frames that answer it must follow
         window_.cancelClose();
         ui_->requestQuit();
     }
@@ -382,8 +413,10 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     applyRequests(requests);
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
+    bool sceneRendered = false;
     if (sceneWidth_ >= 16 && sceneHeight_ >= 16) {
         const bool rendered = renderScene(requests, final);
+        sceneRendered = !sceneReused_;
         updateAccuracy(requests, rendered, sceneWidth_, sceneHeight_);
         updateProbe(requests, rendered);
         present();
@@ -396,6 +429,34 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     frameMs_.push_back(cpuFrameMs_);
     frameCpuMs_.push_back(processCpuMs() - cpu0);
+    noteActivity(newEvents, sceneRendered, requests);
+}
+
+std::string EditorSession::shownState() const {
+    auto accuracyState = [](const EditorAccuracy& a) {
+        const ui::AccuracyView v = a.view();
+        return std::to_string(int(v.state)) + v.phase + std::to_string(v.seconds) + v.error;
+    };
+    const ui::SweepView& sweep = sweep_->view();
+    return status_ + '\n' + ui_->windowTitle() + '\n' + accuracyState(*accuracy_) + '\n' +
+           (accuracyA_ ? accuracyState(*accuracyA_) : "") + '\n' + std::to_string(int(sweep.state)) + ' ' +
+           std::to_string(sweep.done) + ' ' + std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size());
+}
+
+void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRequests& r) {
+    std::string shown = shownState();
+    activity_.events = events;
+    activity_.changed = sceneRendered || r.change != ChangeClass::None || shown != lastShown_;
+    lastShown_ = std::move(shown);
+    // A held key repeats (ImGui's key repeat, the fly's WASD) and a held button may repeat (a
+    // step button) or drag: both act without new events. A scripted orbit turns every frame.
+    const ImGuiIO& io = ImGui::GetIO();
+    bool keyDown = false;  // a modifier held alone does nothing by itself
+    for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k)
+        keyDown |= io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER);
+    const bool buttonDown = std::find(std::begin(io.MouseDown), std::end(io.MouseDown), true) != std::end(io.MouseDown);
+    activity_.animating = keyDown || buttonDown || opt_.orbitDegPerFrame != 0.0f;
+    activity_.jobRunning = accuracy_->busy() || (split_ && accuracyA_ && accuracyA_->busy()) || sweep_->running();
 }
 
 void EditorSession::writeSceneShot(const fs::path& file) const {

@@ -8,6 +8,7 @@
 #include "app/editor_sweep.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
+#include "app/frame_pacer.h"
 #include "app/view_actions.h"
 #include "app/scene_probe.h"
 #include "app/scene_frame.h"
@@ -42,6 +43,11 @@ public:
     // display pixels from the top left, as the last frame placed them.
     void writeLayoutReport(const std::filesystem::path& file) const;
     const EditorAccuracy& accuracy() const { return *accuracy_; }
+    // What the last frame saw, for the FramePacer: events, changes, animation, jobs.
+    const FrameActivity& activity() const { return activity_; }
+    int framesDrawn() const { return int(frameMs_.size()); }
+    const CameraSettings& camera() const { return settings_.camera; }
+    bool splitShown() const { return split_ && !swapped_; }  // the A/B split is on screen
     int exitCode() const { return exitCode_; }
 
 private:
@@ -49,6 +55,7 @@ private:
     std::string checkScene(const std::string& spec, bool ground, const std::filesystem::path& baseDir);
     std::filesystem::path sceneBase() const;  // what relative scene paths are relative to
     void handleInput();
+    glm::vec3 pickedPoint(ImVec2 mouse) const;
     void placeScene(const ui::UiRequests& r);
     void applyRequests(const ui::UiRequests& r);
     // s: sized and viewed; pipScale: of the picture-in-picture's size. false: the settings
@@ -65,6 +72,9 @@ private:
     ui::UiInputs uiInputs();
     void scanPresets();
     void writeScreenshot(const std::filesystem::path& file, int width, int height);
+    // The last frame's activity (FramePacer): `events`, whether the scene image was rendered.
+    void noteActivity(bool events, bool sceneRendered, const ui::UiRequests& r);
+    std::string shownState() const;  // what changes on screen without a scene render: messages, jobs
 
     EditorWindow& window_;
     EditorOptions opt_;
@@ -94,6 +104,8 @@ private:
     FlyState fly_;
     CameraGesture cameraGesture_;
     OrbitCamera orbit_;
+    bool orbiting_ = false;             // an Alt + left drag of the main camera is going on
+    glm::vec3 orbitPivot_{0.0f};        // ... around this point
     bool swapped_ = false;   // side view full window, main camera in the corner
     bool quit_ = false;
     int exitCode_ = 0;
@@ -130,6 +142,9 @@ private:
     std::unique_ptr<EditorAccuracy> accuracyA_;  // A's own ground-truth job
     std::unique_ptr<EditorSweep> sweep_;
     std::vector<std::string> sweepable_;         // sweep::isSweepable over the field table
+    FrameActivity activity_;
+    unsigned long lastEvents_ = 0;  // EditorWindow::eventCount() at the previous frame
+    std::string lastShown_;         // shownState() at the previous frame
 };
 
 }  // namespace st::app

@@ -175,6 +175,7 @@ void EditorSweep::start(const ui::SweepRequest& request, const Settings& live, c
     view_.width = request.width;
     view_.height = request.height;
     view_.scene = live.scene;
+    view_.measuredFrom = live;
     readCount_ = 0;
     try {
         dir_ = newRunFolder();
@@ -237,7 +238,9 @@ void EditorSweep::finish(int status) {
     child_ = -1;
     readNewPoints();
     const bool cancelling = view_.state == ui::SweepView::State::Cancelling;
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !cancelling) {
+    // A child stopped by the cancel exits 130; 0 means it measured every point (Cancel came after
+    // the last one, while it wrote the charts), so the run is done, not "cancelled after 11 of 11".
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
         view_.state = ui::SweepView::State::Done;
     } else if (cancelling) {
         view_.state = ui::SweepView::State::Cancelled;

@@ -93,6 +93,29 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     glfwSetKeyCallback(window_, keyCallback);
     glfwSetMouseButtonCallback(window_, mouseButtonCallback);
     glfwSetCursorPosCallback(window_, cursorPosCallback);
+    // The backend's other callbacks, each counted as an event first (waitEvents), and the window's
+    // own events: a resize or an expose must be redrawn.
+    glfwSetScrollCallback(window_, [](GLFWwindow* w, double x, double y) {
+        countEvent(w);
+        ImGui_ImplGlfw_ScrollCallback(w, x, y);
+    });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned int c) {
+        countEvent(w);
+        ImGui_ImplGlfw_CharCallback(w, c);
+    });
+    glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int f) {
+        countEvent(w);
+        ImGui_ImplGlfw_WindowFocusCallback(w, f);
+    });
+    glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int e) {
+        countEvent(w);
+        ImGui_ImplGlfw_CursorEnterCallback(w, e);
+    });
+    glfwSetWindowSizeCallback(window_, [](GLFWwindow* w, int, int) { countEvent(w); });
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { countEvent(w); });
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { countEvent(w); });
+    glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { countEvent(w); });
+    glfwSetWindowCloseCallback(window_, [](GLFWwindow* w) { countEvent(w); });
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window_, &x, &y);  // where a click before the first move happens
     mouse_.place(x, y);
@@ -120,23 +143,28 @@ void EditorWindow::cancelClose() {
     interrupted = false;
 }
 
+void EditorWindow::countEvent(GLFWwindow* window) { ++static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->events_; }
+
 void EditorWindow::keyCallback(GLFWwindow* window, int key, int, int action, int) {
+    countEvent(window);
     if (action == GLFW_REPEAT) return;  // ImGui makes its own repeats from the held key
     static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->keys_.push(key, action == GLFW_PRESS);
 }
 
 void EditorWindow::cursorPosCallback(GLFWwindow* window, double x, double y) {
+    countEvent(window);
     static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->mouse_.move(x, y);
 }
 
 void EditorWindow::mouseButtonCallback(GLFWwindow* window, int button, int action, int) {
+    countEvent(window);
     static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->mouse_.button(button, action == GLFW_PRESS);
 }
 
 void EditorWindow::beginFrame() {
     glfwPollEvents();
     ImGuiIO& io = ImGui::GetIO();
-    keys_.feed(io.KeysDown);
+    keysQueued_ = keys_.feed(io.KeysDown);
     const Modifiers held = modifiersOf(io.KeysDown);
     io.KeyCtrl = held.ctrl, io.KeyShift = held.shift, io.KeyAlt = held.alt, io.KeySuper = held.super;
     ImGui_ImplOpenGL3_NewFrame();
@@ -146,6 +174,15 @@ void EditorWindow::beginFrame() {
     std::copy(mouse_.down().begin(), mouse_.down().end(), io.MouseDown);
     if (shown) io.MousePos = {shown->x, shown->y};  // else the backend's: the cursor, or none when it left
     ImGui::NewFrame();
+}
+
+void EditorWindow::waitEvents(double timeoutSeconds) {
+    if (timeoutSeconds >= 0.0) {
+        glfwWaitEventsTimeout(timeoutSeconds);
+        return;
+    }
+    const unsigned long before = events_;
+    while (events_ == before && !shouldClose()) glfwWaitEventsTimeout(0.5);
 }
 
 void EditorWindow::endFrame() {

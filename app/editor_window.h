@@ -26,6 +26,14 @@ public:
     bool shouldClose() const;  // the close button, or SIGINT/SIGTERM (Ctrl+C in the terminal)
     void cancelClose();  // the close button was handled: keep running until the panels agree
     void beginFrame();  // poll events, start an ImGui frame
+    // Waits until an event comes (input, resize, expose, focus) or `timeoutSeconds` pass; a
+    // negative timeout waits for an event only, waking twice a second to see Ctrl+C
+    // (shouldClose), which no GLFW event reports. Draws nothing.
+    void waitEvents(double timeoutSeconds);
+    // Events GLFW delivered so far: the shell compares counts to see whether a frame had any.
+    unsigned long eventCount() const { return events_; }
+    // Key or mouse events wait in the queues for a later frame (one change per key or button a frame).
+    bool inputQueued() const { return keysQueued_ || !mouse_.empty(); }
     void endFrame();    // render ImGui over the back buffer
     void swapBuffers();
     void setTitle(const std::string& title);
@@ -36,6 +44,7 @@ private:
     static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void cursorPosCallback(GLFWwindow* window, double x, double y);
     static void mouseButtonCallback(GLFWwindow* window, int button, int action, int mods);
+    static void countEvent(GLFWwindow* window);
 
     GLFWwindow* window_ = nullptr;
     KeyQueue keys_;  // fed to ImGui a change per key per frame, so no tap is lost (issue 13 #3)
@@ -43,6 +52,8 @@ private:
     std::filesystem::path configDir_;
     std::string iniPath_;  // must outlive the ImGui context (io.IniFilename points into it)
     std::string title_;
+    unsigned long events_ = 0;
+    bool keysQueued_ = false;
 };
 
 }  // namespace st::app

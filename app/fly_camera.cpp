@@ -2,6 +2,7 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,22 @@ glm::vec3 rotate(glm::vec3 fwd, glm::vec2 delta) {
     return {std::cos(pitch) * std::sin(yaw), std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
 }
 }  // namespace
+
+bool orbitCamera(CameraSettings& cam, glm::vec3 pivot, glm::vec2 mouseDelta) {
+    if (mouseDelta == glm::vec2(0.0f)) return false;
+    const glm::vec3 before = forwardOf(cam), after = rotate(before, mouseDelta);
+    const float yaw0 = std::atan2(before.x, -before.z), yaw1 = std::atan2(after.x, -after.z);
+    const float pitch0 = std::asin(std::clamp(before.y, -1.0f, 1.0f)), pitch1 = std::asin(std::clamp(after.y, -1.0f, 1.0f));
+    const glm::vec3 horizontal = glm::cross(before, glm::vec3(0.0f, 1.0f, 0.0f));
+    if (glm::length(horizontal) < 1e-6f) return false;  // straight up or down: no right axis
+    // Pitch about the camera's right axis, then yaw about world up (a larger yaw turns towards +x,
+    // a negative turn about +y): the rotation that takes the old forward to the new one.
+    const glm::quat turn = glm::angleAxis(-(yaw1 - yaw0), glm::vec3(0.0f, 1.0f, 0.0f)) *
+                           glm::angleAxis(pitch1 - pitch0, glm::normalize(horizontal));
+    cam.position = pivot + turn * (cam.position - pivot);
+    cam.target = pivot + turn * (cam.target - pivot);
+    return true;
+}
 
 void frameBounds(CameraSettings& cam, const csm::Aabb& b) {
     glm::vec3 centre = b.center();

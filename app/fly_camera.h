@@ -26,6 +26,12 @@ struct FlyState {
 // Returns true if the camera changed.
 bool updateFlyCamera(CameraSettings& cam, FlyState& state, const FlyInput& in, const csm::Aabb& wsSceneBounds);
 
+// Orbit (issue 21 #3, Alt + left drag): turns the camera around `pivot` (the point picked under
+// the cursor when the drag began, or the target) by the mouse movement, as looking around would
+// turn it, so the pivot keeps its place in the picture and its distance. Pitch stops short of
+// straight up or down. Returns true if the camera changed.
+bool orbitCamera(CameraSettings& cam, glm::vec3 pivot, glm::vec2 mouseDelta);
+
 // Camera position and target that show the whole bounds from the current viewing direction.
 void frameBounds(CameraSettings& cam, const csm::Aabb& wsBounds);
 

@@ -89,20 +89,27 @@ std::string costText(const FrameStats* s) {
     return text;
 }
 
-// A label box whose right (A) or left (live) edge is at x.
-void label(UiFrame& f, const std::string& key, float x, float y, bool rightAligned, ImU32 accent,
-           const std::string& name, const AccuracyView& a, const FrameStats* s) {
+// A label box whose right (A) or left (live) edge is at x, moved inside the scene viewport when
+// the divider is near its edge (a panel covered "live: 1.089 ..." there, issue 21 #10), and below
+// `other` when that puts it over the other label.
+Rect label(UiFrame& f, const std::string& key, float x, float y, bool rightAligned, ImU32 accent,
+           const std::string& name, const AccuracyView& a, const FrameStats* s, const Rect* other = nullptr) {
     const std::string l1 = name + ": " + accuracyText(a), l2 = costText(s);
     const ImVec2 pad{6.0f, 4.0f};
     const float w = std::max(ImGui::CalcTextSize(l1.c_str()).x, ImGui::CalcTextSize(l2.c_str()).x) + 2.0f * pad.x;
     const float h = 2.0f * ImGui::GetTextLineHeightWithSpacing() + pad.y;
-    const ImVec2 min{rightAligned ? x - w : x, y}, max{min.x + w, y + h};
+    const Rect& scene = f.state.layout.scene;
+    constexpr float kInset = 4.0f;
+    const float x0 = std::clamp(rightAligned ? x - w : x, scene.min.x + kInset, std::max(scene.min.x + kInset, scene.max.x - kInset - w));
+    if (other && Rect{{x0, y}, {x0 + w, y + h}}.overlaps(*other)) y = other->max.y + kInset;
+    const ImVec2 min{x0, y}, max{min.x + w, y + h};
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     dl->AddRectFilled(min, max, IM_COL32(0, 0, 0, 170), 3.0f);
     dl->AddRect(min, max, accent, 3.0f);
     dl->AddText({min.x + pad.x, min.y + pad.y}, IM_COL32_WHITE, l1.c_str());
     dl->AddText({min.x + pad.x, min.y + pad.y + ImGui::GetTextLineHeightWithSpacing()}, IM_COL32_WHITE, l2.c_str());
     f.state.rects[key] = {min, max};
+    return {min, max};
 }
 
 // The divider: a thin window (so the app's camera does not take the drag) with a grip to drag.
@@ -133,8 +140,8 @@ void divider(UiFrame& f) {
     ImGui::PopStyleVar(2);
     ImGui::GetBackgroundDrawList()->AddLine({x, top}, {x, bottom}, active ? IM_COL32(255, 220, 80, 255) : IM_COL32_WHITE, 2.0f);
     const float y = top + 8.0f;
-    label(f, "ab.labelA", x - 10.0f, y, true, IM_COL32(80, 200, 255, 255), "A", f.in.ab.accuracy, f.in.ab.stats);
-    label(f, "ab.labelLive", x + 10.0f, y, false, IM_COL32(80, 220, 90, 255), "live", f.in.accuracy, f.in.stats);
+    const Rect a = label(f, "ab.labelA", x - 10.0f, y, true, IM_COL32(80, 200, 255, 255), "A", f.in.ab.accuracy, f.in.ab.stats);
+    label(f, "ab.labelLive", x + 10.0f, y, false, IM_COL32(80, 220, 90, 255), "live", f.in.accuracy, f.in.stats, &a);
 }
 
 }  // namespace

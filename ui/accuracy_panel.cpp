@@ -111,7 +111,13 @@ void figures(UiFrame& f) {
     recordItem(f.state.rects, "accuracy.figures");
     drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
     cascadeTable(f);
-    for (const std::string& w : a.warnings) ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.2f, 1.0f), "%s", w.c_str());
+    // Wrapped: a warning ends with its likely fix, which a narrow panel used to cut (issue 21 #6).
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.2f, 1.0f));
+    for (std::size_t i = 0; i < a.warnings.size(); ++i) {
+        ImGui::TextWrapped("%s", a.warnings[i].c_str());
+        recordItem(f.state.rects, "accuracy.warning." + std::to_string(i));
+    }
+    ImGui::PopStyleColor();
     if (!a.warnings.empty()) recordItem(f.state.rects, "accuracy.warnings");
     softFigures(f);
 }

@@ -19,7 +19,8 @@ struct CompareUiState {
                                AxisEdit{"cascades.mapSize", false, "512, 1024, 2048", 0.0, 0.0, 0.0}};
     int width = 320, height = 180;
     bool byMemory = false;      // the chart's x axis: memory instead of GPU time
-    std::string applied;        // the last point a click applied ("applied count=2 ...")
+    std::string applied;        // the last point a click applied ("applied count=2 ..."), while
+    std::optional<Settings> appliedAs;  // the settings are still what it made them
 };
 
 }  // namespace st::ui

@@ -2,11 +2,13 @@
 // What the A/B split and the Sweep panel show, as plain values the app fills in (ui/ includes
 // neither the sweep library nor GL), and what the Sweep panel asks the app to run.
 #include "renderer/render/frame_stats.h"
+#include "renderer/settings/settings.h"
 #include "ui/accuracy_view.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +47,7 @@ struct SweepView {
     std::string scene;                // what the sweep measured, for the chart's title
     int width = 0, height = 0;
     std::vector<SweepPoint> points;   // those measured so far
+    std::optional<Settings> measuredFrom;  // the live settings the run started from (its camera, sun, scene)
     // The chart's axis titles and the cost's short name (the figure table's rows).
     std::string costTitle = "cost", memoryTitle = "memory", errorTitle = "error", costName = "cost";
 };

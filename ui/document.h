@@ -16,6 +16,7 @@ struct Document {
     std::optional<Settings> clean;     // as last loaded or saved; nullopt until known
     std::vector<std::string> errors;   // of the last failed load or save
     std::string status;                // of the last successful one: "Saved presets/a.json"
+    std::string schema;                // the file's "$schema" (relative to its folder), kept by saves
     // The debug view (output.view) is editor state: off, changing it neither dirties the document
     // nor is saved; the file keeps the view it had (issue 13 #4).
     bool saveViewWithPreset = false;
@@ -30,7 +31,9 @@ bool isDirty(const Document& doc, const Settings& s);  // false while `clean` is
 // result is false. On success the document becomes `file`, clean.
 bool loadDocument(Document& doc, const std::filesystem::path& file, Settings& s);
 
-// savePresetAtomic(documentPart(s), file). On failure (invalid settings, unwritable folder) doc.errors says why.
+// savePresetAtomic(documentPart(s), file), with the document's "$schema" rebased for `file`'s
+// folder; a missing folder is created (the status says so). On failure (invalid settings,
+// unwritable folder) doc.errors says why.
 bool saveDocument(Document& doc, const Settings& s, const std::filesystem::path& file);
 
 // A path typed in "Save as": relative paths are taken from presetDir, ".json" is added when the

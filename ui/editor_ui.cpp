@@ -50,12 +50,12 @@ void drawPanels(UiFrame& f) {
         drawSplitBar(f);
     }
     drawSceneLegends(f);
-    drawProbe(f);
     drawStatusBar(f);
     drawCompare(f);
     drawHelpWindow(f);
     drawConfirmDiscard(f);
     drawConfirmMapCost(f);
+    drawProbe(f);  // last: a popup opened this frame stops it
 }
 
 void finishFrame(UiFrame& f, const Settings& atStart) {
@@ -91,6 +91,8 @@ UiRequests EditorUi::draw(Settings& s, const UiInputs& in) {
     drawPanels(f);
     ImGui::PopAllowKeyboardFocus();
     trackEditGesture(f, beforeWidgets);
+    // Undo, redo, a load or Revert replaced the values a refusal was about (issue 21 #11).
+    if (f.replaced) f.state.fieldEdits = {};
     finishFrame(f, atStart);
     return req;
 }

@@ -126,6 +126,22 @@ bool drawManualSplits(const FieldInfo& field, UiFrame& f) {
     return storeField(field, f.s, splits);
 }
 
+// A row per cascade, greyed, each at the factor of 1 an empty list means: the Bias section shows
+// every cascade's row whether or not it has a value of its own (issue 21 #5).
+void drawSingleValueRows(const FieldInfo& field, int count, ItemRects& rects) {
+    ImGui::BeginDisabled();
+    for (int i = 0; i < count; ++i) {
+        ImGui::PushID(i);
+        float one = 1.0f;
+        ImGui::DragFloat(elementLabel(field, std::size_t(i)).c_str(), &one, 0.0f, 1.0f, 1.0f, "%.2f x (the same for all)");
+        ImGui::PopID();
+        recordItem(rects, std::string(field.path) + "[" + std::to_string(i) + "]#single");
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("One value for every cascade. Per cascade gives each its own factor.");
+}
+
 // bias.constantScale, slopeScale, normalOffsetScale: empty (1 for every cascade) offers "Per
 // cascade", which starts from count factors of 1 (the image unchanged); a list shows a factor per
 // cascade and "Same for all", which empties it again.
@@ -145,6 +161,7 @@ bool drawBiasScale(const FieldInfo& field, UiFrame& f) {
             changed = true;
         }
         recordItem(f.state.rects, std::string(field.path) + "#perCascade");
+        drawSingleValueRows(field, f.s.cascades.count, f.state.rects);
     } else {
         changed = editFloatElements(field, factors, f.state.rects, f.state.fieldEdits);
         if (ImGui::SmallButton("Same for all")) {

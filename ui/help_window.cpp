@@ -14,11 +14,12 @@ struct Shortcut {
     const char* action;
 };
 
-constexpr std::array<Shortcut, 14> kShortcuts{{
+constexpr std::array<Shortcut, 15> kShortcuts{{
     {"Right mouse + W A S D", "fly the camera"},
     {"Right mouse + Q / E", "fly down / up"},
     {"Mouse wheel", "fly speed"},
     {"Middle mouse drag", "pan the camera"},
+    {"Alt + left drag", "orbit around the point under the cursor"},
     {"F", "frame the scene (near/far kept)"},
     {"Tab", "swap the side view with the main view"},
     {"Drag / wheel on side view", "orbit / zoom the side camera"},

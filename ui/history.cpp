@@ -34,6 +34,18 @@ float History::mean() const {
     return std::accumulate(values_.begin(), values_.end(), 0.0f) / static_cast<float>(values_.size());
 }
 
+float History::recentMedian(std::size_t count) const {
+    const std::size_t n = std::min(count, values_.size());
+    if (n == 0) return 0.0f;
+    std::vector<float> recent;
+    recent.reserve(n);
+    // Newest first: the slot before next_ once the ring is full, else the end of the vector.
+    const std::size_t newest = values_.size() < capacity_ ? values_.size() : next_;
+    for (std::size_t i = 1; i <= n; ++i) recent.push_back(values_[(newest + values_.size() - i) % values_.size()]);
+    std::sort(recent.begin(), recent.end());
+    return n % 2 ? recent[n / 2] : 0.5f * (recent[n / 2 - 1] + recent[n / 2]);
+}
+
 float History::max() const {
     if (values_.empty()) return 0.0f;
     return *std::max_element(values_.begin(), values_.end());

@@ -19,6 +19,9 @@ public:
     float latest() const;  // 0 when empty
     float mean() const;    // 0 when empty
     float max() const;     // 0 when empty
+    // The median of the newest `count` values (all of them when fewer); the mean of the middle
+    // two for an even count. 0 when empty.
+    float recentMedian(std::size_t count) const;
 
 private:
     std::size_t capacity_;

@@ -42,21 +42,25 @@ Rect centred(float width, float height) {
     return rect(c.x - width * 0.5f, c.y - height * 0.5f, c.x + width * 0.5f, c.y + height * 0.5f);
 }
 
-// The user resized a docked window: keep the new column width or panel height.
+// The user resized a docked window: keep the new column width or panel height. Only a drag of
+// its edge does: ImGui also gives a window another size than the one placed when the display
+// shrinks under it, and keeping that made the next launch cramped (issue 21 #5). What is kept
+// is never below a column's minimum; the small window's squeeze is computeLayout's, per frame.
 void takeBackSize(UiFrame& f, Panel panel, const Rect& placed) {
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
     const ImVec2 size = ImGui::GetWindowSize();
     LayoutPrefs& p = f.state.prefs;
     switch (panel) {
         case Panel::Settings:
-            if (size.x != placed.width()) p.leftWidth = size.x;
+            if (size.x != placed.width()) p.leftWidth = std::max(size.x, kMinLeft);
             break;
         case Panel::Presets:
         case Panel::ShadowMaps:
         case Panel::SideView:
-            if (size.x != placed.width()) p.rightWidth = size.x;
+            if (size.x != placed.width()) p.rightWidth = std::max(size.x, kMinRight);
             break;
         case Panel::Accuracy:
-            if (size.y != placed.height()) p.bottomHeight = size.y;
+            if (size.y != placed.height()) p.bottomHeight = std::max(size.y, kMinBottom);
             break;
         default: break;
     }

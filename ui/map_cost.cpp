@@ -31,8 +31,15 @@ std::optional<double> measuredMsPerTexel(const FrameStats& stats, const CascadeS
     return ms / texels;
 }
 
-MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel) {
+std::optional<double> modelledMsPerTexel(const FrameStats& stats, const CascadeSettings& rendered) {
+    const double texels = cascadeTexels(rendered);
+    if (stats.modelShadowMs <= 0.0 || texels <= 0.0) return std::nullopt;
+    return stats.modelShadowMs / texels;
+}
+
+MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel, bool modelled) {
     MapCost cost;
+    cost.modelled = modelled && msPerTexel.has_value();
     try {
         cost.bytes = csm::storageBytes(csm::planStorage(c));
     } catch (const std::invalid_argument&) {
@@ -75,7 +82,7 @@ std::string costQuestion(const CascadeSettings& c, const MapCost& cost) {
     std::string q = mapsText(c) + ":";
     if (cost.bytes) q += " " + formatBytes(*cost.bytes) + " of shadow maps";
     if (cost.redrawMs) q += std::string(cost.bytes ? "," : "") + " about " + durationText(*cost.redrawMs) +
-                            " per redraw on this machine";
+                            (cost.modelled ? " per redraw (modelled: no shadow pass timed yet)" : " per redraw on this machine");
     return q + ". Apply?";
 }
 

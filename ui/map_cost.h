@@ -27,6 +27,7 @@ inline constexpr double kAskAboveRedrawMs = 250.0;
 struct MapCost {
     std::optional<std::size_t> bytes;
     std::optional<double> redrawMs;
+    bool modelled = false;  // redrawMs comes from the cost model, no shadow pass having been timed
 };
 
 // Texels of every cascade's map (csm::cascadeMapSize each), the quantity the redraw time scales with.
@@ -37,7 +38,12 @@ double cascadeTexels(const CascadeSettings& c);
 // with a measured time.
 std::optional<double> measuredMsPerTexel(const FrameStats& stats, const CascadeSettings& rendered);
 
-MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel);
+// The same rate from the app's cost model (FrameStats::modelShadowMs, every map redrawn), for a
+// session whose shadow passes were never timed: the 8192 prompt then still says what the redraw
+// costs (issue 21 #12). nullopt when the frame was not modelled.
+std::optional<double> modelledMsPerTexel(const FrameStats& stats, const CascadeSettings& rendered);
+
+MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel, bool modelled = false);
 
 // Whether going from `before` to `after` asks first: a limit is exceeded and that figure grows
 // (a change that lowers a cost already over the limit applies at once).
@@ -57,6 +63,7 @@ struct MapCostAsk {
     std::string question;
     bool open = false;                 // open the modal this frame
     std::optional<double> msPerTexel;
+    bool modelled = false;             // msPerTexel is the cost model's, nothing measured yet
 };
 
 }  // namespace st::ui

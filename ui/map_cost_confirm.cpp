@@ -20,11 +20,19 @@ bool modalButton(UiFrame& f, const char* label, const char* key) {
 }
 
 // `rendered`: the settings of the last frame (f.s already holds the edit being judged).
+// A measured rate replaces a modelled one and is kept; the model stands in until one is measured.
 std::optional<double> msPerTexel(UiFrame& f, const CascadeSettings& rendered) {
+    MapCostAsk& ask = f.state.mapAsk;
     if (f.in.stats) {
-        if (const auto measured = measuredMsPerTexel(*f.in.stats, rendered)) f.state.mapAsk.msPerTexel = measured;
+        if (const auto measured = measuredMsPerTexel(*f.in.stats, rendered)) {
+            ask.msPerTexel = measured;
+            ask.modelled = false;
+        } else if (const auto modelled = modelledMsPerTexel(*f.in.stats, rendered); modelled && (!ask.msPerTexel || ask.modelled)) {
+            ask.msPerTexel = modelled;
+            ask.modelled = true;
+        }
     }
-    return f.state.mapAsk.msPerTexel;
+    return ask.msPerTexel;
 }
 
 }  // namespace
@@ -32,8 +40,8 @@ std::optional<double> msPerTexel(UiFrame& f, const CascadeSettings& rendered) {
 bool holdExpensiveEdit(UiFrame& f, const FieldInfo& field, const Settings& before) {
     if (!affectsMapCost(field.path)) return false;
     const std::optional<double> rate = msPerTexel(f, before.cascades);
-    const MapCost after = mapCost(f.s.cascades, rate);
-    if (!asksFirst(mapCost(before.cascades, rate), after)) return false;
+    const MapCost after = mapCost(f.s.cascades, rate, f.state.mapAsk.modelled);
+    if (!asksFirst(mapCost(before.cascades, rate, f.state.mapAsk.modelled), after)) return false;
     f.state.mapAsk.field = &field;
     f.state.mapAsk.value = field.get(f.s);
     f.state.mapAsk.question = costQuestion(f.s.cascades, after);

@@ -36,8 +36,10 @@ void open(UiFrame& f) {
     if (f.state.openText.empty()) return;
     requestLoad(f, resolveSavePath(f.state.presetDir, f.state.openText));
     // Loaded, or waiting for the unsaved-changes question: the window has done its part. A failed
-    // load keeps it open, with the reason below the field.
+    // load keeps it open, with the reason below the field and the cursor back in the field
+    // (Enter let it go), so the path can be corrected and Tab completes instead of swapping views.
     if (f.req.presetLoaded || f.state.openConfirm) f.state.showOpen = false;
+    else f.state.focusOpenPath = true;
 }
 
 void drawCandidates(UiFrame& f) {
@@ -66,6 +68,7 @@ void drawErrors(const UiFrame& f) {
 void showOpenDialog(UiState& state) {
     state.showOpen = true;
     state.focusOpenPath = true;
+    state.selectOpenPath = true;  // the last path is offered, and typing replaces it (issue 21 #7)
     state.openCandidatesKnown = false;  // the folder may have changed since
 }
 
@@ -83,9 +86,11 @@ void drawOpenDialog(UiFrame& f) {
         ImGui::SetNextItemWidth(-70.0f);
         const bool entered = ImGui::InputTextWithHint(
             "##openPath", "scenes/fox.json", &f.state.openText,
-            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackCompletion, completeOnTab, &f.state);
+            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackCompletion |
+                (f.state.selectOpenPath ? ImGuiInputTextFlags_AutoSelectAll : 0),
+            completeOnTab, &f.state);
         recordItem(f.state.rects, "open.path");
-        if (ImGui::IsItemActive()) f.state.focusOpenPath = false;
+        if (ImGui::IsItemActive()) f.state.focusOpenPath = f.state.selectOpenPath = false;
         ImGui::SameLine();
         const bool pressed = ImGui::Button("Open");
         recordItem(f.state.rects, "open.open");

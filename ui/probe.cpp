@@ -38,9 +38,13 @@ void probeLines(const ProbeView& p) {
 void drawProbe(UiFrame& f) {
     const Rect& scene = f.state.layout.scene;
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    if (!scene.contains(mouse) || ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow) || ImGui::IsAnyItemActive() ||
+    // Flying the camera, over a panel, or while a popup or modal is open (the Sweep panel's field
+    // list, the Unsaved-changes question): the tooltip would be drawn over them (issue 21 #3).
+    // WantCaptureMouse covers a hovered window and an open popup, as of this frame's start.
+    if (!scene.contains(mouse) || ImGui::GetIO().WantCaptureMouse || ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow) ||
+        ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) || ImGui::IsAnyItemActive() ||
         ImGui::IsAnyMouseDown())
-        return;  // flying the camera, or over a panel
+        return;
     f.req.probeWanted = true;
     f.req.probePixel = {std::floor(mouse.x - scene.min.x), std::floor(mouse.y - scene.min.y)};
     const ProbeView& p = f.in.probe;

@@ -30,7 +30,8 @@ void editingShortcuts(UiFrame& f, const ImGuiIO& io) {
 void viewShortcuts(UiFrame& f, const ImGuiIO& io) {
     if (io.WantCaptureKeyboard || io.KeyCtrl || io.KeyAlt) return;
     if (pressed(f.state.keys.frame)) f.req.frameScene = true;
-    if (pressed(ImGui::GetKeyIndex(ImGuiKey_Tab))) f.req.swapSideView = true;
+    // Not while File > Open is up: Tab is its completion key, even in a frame the field let go.
+    if (pressed(ImGui::GetKeyIndex(ImGuiKey_Tab)) && !f.state.showOpen) f.req.swapSideView = true;
     if (pressed(f.state.keys.help)) f.state.showHelp = !f.state.showHelp;
     if (pressed(f.state.keys.hidePanels)) f.state.prefs.panelsHidden = !f.state.prefs.panelsHidden;
 }

@@ -27,8 +27,11 @@ float clampedSplit(const std::vector<float>& inner, int index, float nearDepth, 
     const auto i = static_cast<std::size_t>(index);
     const float lo = i == 0 ? nearDepth : inner[i - 1];
     const float hi = i + 1 >= inner.size() ? farDepth : inner[i + 1];
-    // A centimetre, or a thousandth of the gap, from each neighbour: never equal splits.
-    const float gap = std::max((hi - lo) * 1e-3f, std::min(0.01f, (hi - lo) * 0.25f));
+    // No cascade thinner than 1 % of the bar's range or half a metre, whichever is more (a 0.2 m
+    // cascade between 59.5 and 59.7 m wastes a whole map, issue 21 #12); between neighbours already
+    // closer than that, a quarter of their gap, so the handle still moves and never meets them.
+    const float minimum = std::max(0.01f * (farDepth - nearDepth), 0.5f);
+    const float gap = std::min(minimum, (hi - lo) * 0.25f);
     return std::clamp(depth, lo + gap, hi - gap);
 }
 

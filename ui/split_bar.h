@@ -23,8 +23,8 @@ struct SideSplitHandle {
     ImVec2 uvPerMetre{0.0f, 0.0f};
 };
 
-// `depth` for inner split `index`, kept strictly between its neighbours (and the bar's ends) so
-// the manual splits stay increasing.
+// `depth` for inner split `index`, kept between its neighbours (and the bar's ends) so the manual
+// splits stay increasing and no cascade is thinner than 1 % of the range or 0.5 m.
 float clampedSplit(const std::vector<float>& inner, int index, float nearDepth, float farDepth, float depth);
 
 // The depth a handle dragged to `fraction` (0 at the near end of the bar, 1 at the shadow

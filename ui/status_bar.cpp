@@ -8,15 +8,26 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace st::ui {
 
 std::string frameRateText(const History& cpuFrameMs) {
-    const float meanMs = cpuFrameMs.mean();
-    if (cpuFrameMs.size() == 0 || meanMs <= 0.0f) return "-- fps";
+    const float medianMs = cpuFrameMs.recentMedian(kFpsFrames);
+    if (cpuFrameMs.size() == 0 || medianMs <= 0.0f) return "-- fps";
     char text[48];
-    std::snprintf(text, sizeof text, "%.1f fps (%.1f ms)", 1000.0 / double(meanMs), double(meanMs));
+    std::snprintf(text, sizeof text, "%.1f fps (%.1f ms)", 1000.0 / double(medianMs), double(medianMs));
+    return text;
+}
+
+std::string saveSizeText(int outputWidth, int outputHeight, float sceneWidth, float sceneHeight) {
+    char text[128];
+    if (outputWidth == int(std::lround(sceneWidth)) && outputHeight == int(std::lround(sceneHeight)))
+        std::snprintf(text, sizeof text, "saves render at %d x %d, as shown", outputWidth, outputHeight);
+    else
+        std::snprintf(text, sizeof text, "saves render at %d x %d (the preset's output size; framing differs)", outputWidth,
+                      outputHeight);
     return text;
 }
 
@@ -43,6 +54,11 @@ void drawStatusBar(UiFrame& f) {
         const Rect& scene = f.state.layout.scene;
         ImGui::SameLine(0.0f, 24.0f);
         ImGui::Text("scene %.0f x %.0f px", double(scene.width()), double(scene.height()));
+        ImGui::SameLine(0.0f, 24.0f);
+        ImGui::TextDisabled("%s", saveSizeText(f.s.output.width, f.s.output.height, scene.width(), scene.height()).c_str());
+        recordItem(f.state.rects, "status.saveSize");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("`shadowtune render` of the saved preset draws Output > width x height, not this view's size.");
         ImGui::SameLine(0.0f, 24.0f);
         ImGui::TextDisabled(f.state.prefs.panelsHidden ? "H: show panels" : "H: hide panels");
     }

@@ -6,9 +6,15 @@
 
 namespace st::ui {
 
-// "12.5 fps (80.0 ms)": frames over the time they took, the plot's window (about 4 s at 60 Hz);
-// "-- fps" before the first frame.
+// "12.5 fps (80.0 ms)": from the median of the last kFpsFrames frame times, so it follows a
+// change within a few frames and one slow frame does not move it (a mean over the plot's 4 s
+// lagged: 57 -> 20 fps over 4 s of motion, issue 21 #3); "-- fps" before the first frame.
+inline constexpr std::size_t kFpsFrames = 15;
 std::string frameRateText(const History& cpuFrameMs);
+
+// "saves render at 640 x 360 (the preset's output size)": `render` of a saved preset draws its
+// output size, not the viewport's, so the framing can differ (issue 21 #9).
+std::string saveSizeText(int outputWidth, int outputHeight, float sceneWidth, float sceneHeight);
 
 // The scene image on screen: the editor redraws it only when something it shows changed, and
 // at a lower resolution while the view moves (issue 13 #10), so the UI's frame rate above is not

@@ -119,6 +119,7 @@ void apply(UiFrame& f, const SweepPoint& p) {
     }
     applyEdit(f, std::move(after));
     f.state.compare.applied = "applied " + p.label;
+    f.state.compare.appliedAs = f.s;
 }
 
 void tooltip(const SweepPoint& p) {
@@ -130,8 +131,24 @@ void tooltip(const SweepPoint& p) {
     ImGui::EndTooltip();
 }
 
+// The chart's figures were measured from the run's camera, sun and scene: once the live view
+// left them, they describe another frame (issue 21 #11).
+bool measuredElsewhere(const SweepView& v, const Settings& live) {
+    if (!v.measuredFrom) return false;
+    const Settings& from = *v.measuredFrom;
+    return from.camera != live.camera || from.light != live.light || from.scene != live.scene || from.ground != live.ground;
+}
+
 void chart(UiFrame& f, const SweepView& v) {
+    CompareUiState& c = f.state.compare;
+    if (c.appliedAs && *c.appliedAs != f.s) c.applied.clear(), c.appliedAs.reset();  // a later edit
     if (v.points.empty()) return;
+    const bool stale = measuredElsewhere(v, f.s);
+    if (stale) {
+        ImGui::TextColored(kErrorColour, "Measured from another view: the camera, sun or scene changed since. Run again.");
+        recordItem(f.state.rects, "sweep.stale");
+        ImGui::PushStyleVar(ImGuiStyleVar_Alpha, ImGui::GetStyle().Alpha * 0.45f);
+    }
     const std::string costRadio = "x: " + v.costName;
     ImGui::RadioButton(costRadio.c_str(), !f.state.compare.byMemory) && (f.state.compare.byMemory = false);
     ImGui::SameLine();
@@ -145,7 +162,11 @@ void chart(UiFrame& f, const SweepView& v) {
         f.state.rects["sweep.point." + std::to_string(i)] = {{r.screen[i].x - 1.0f, r.screen[i].y - 1.0f}, {r.screen[i].x + 1.0f, r.screen[i].y + 1.0f}};
     if (r.hovered >= 0) tooltip(v.points[std::size_t(r.hovered)]);
     if (r.clicked >= 0) apply(f, v.points[std::size_t(r.clicked)]);
-    if (!f.state.compare.applied.empty()) ImGui::TextUnformatted(f.state.compare.applied.c_str());
+    if (stale) ImGui::PopStyleVar();
+    if (!c.applied.empty()) {
+        ImGui::TextUnformatted(c.applied.c_str());
+        recordItem(f.state.rects, "sweep.applied");
+    }
 }
 
 }  // namespace

@@ -49,6 +49,7 @@ struct UiState {
     std::string saveAsText;                // the "Save as" path field
     bool showOpen = false;                 // File > Open's window
     bool focusOpenPath = false;            // ... put the cursor in its path field this frame
+    bool selectOpenPath = false;           // ... with its text selected, so typing replaces the last path
     std::string openText;                  // its path field
     std::string openCandidatesFor;         // the text openCandidates were listed for
     std::vector<std::string> openCandidates;

@@ -84,25 +84,35 @@ std::string readText(const fs::path& file, const std::string& kind) {
 }
 
 // Writes all of `text` to `file` and flushes it to disk; "" on success, else the reason (and the
-// file is removed again).
+// file is removed again). The reason names no file: `file` is a temporary name the user never chose.
 std::string writeSynced(const fs::path& file, const std::string& text) {
     const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) return std::string("cannot create ") + file.string() + ": " + std::strerror(errno);
+    if (fd < 0) {
+        const int err = errno;
+        std::error_code ec;
+        if (err == ENOENT && !fs::is_directory(file.parent_path().empty() ? "." : file.parent_path(), ec))
+            return "the folder " + file.parent_path().string() + " does not exist";
+        return std::string("cannot create the file: ") + std::strerror(err);
+    }
     std::string error;
     for (std::size_t done = 0; done < text.size() && error.empty();) {
         const auto written = ::write(fd, text.data() + done, text.size() - done);
-        if (written < 0 && errno != EINTR) error = std::string("cannot write ") + file.string() + ": " + std::strerror(errno);
+        if (written < 0 && errno != EINTR) error = std::string("cannot write: ") + std::strerror(errno);
         if (written > 0) done += static_cast<std::size_t>(written);
     }
-    if (error.empty() && ::fsync(fd) != 0) error = std::string("cannot sync ") + file.string() + ": " + std::strerror(errno);
-    if (::close(fd) != 0 && error.empty()) error = std::string("cannot close ") + file.string() + ": " + std::strerror(errno);
+    if (error.empty() && ::fsync(fd) != 0) error = std::string("cannot sync: ") + std::strerror(errno);
+    if (::close(fd) != 0 && error.empty()) error = std::string("cannot close: ") + std::strerror(errno);
     if (!error.empty()) ::unlink(file.c_str());
     return error;
 }
 
-std::string presetText(const Settings& s, const std::string& name) {
+std::string presetText(const Settings& s, const std::string& name, const std::string& schemaRef) {
     try {
-        return toOrderedJson(s).dump(2) + "\n";
+        if (schemaRef.empty()) return toOrderedJson(s).dump(2) + "\n";
+        nlohmann::ordered_json j{{"$schema", schemaRef}};
+        const nlohmann::ordered_json fields = toOrderedJson(s);
+        for (const auto& [key, value] : fields.items()) j[key] = value;
+        return j.dump(2) + "\n";
     } catch (const nlohmann::json::exception& e) {  // e.g. a string that is not valid UTF-8
         throw SettingsError(name + ": cannot save preset: " + e.what());
     }
@@ -118,13 +128,13 @@ Settings loadPreset(const fs::path& file) {
     return fromJson(loadJsonFile(file, "preset"), file.string());
 }
 
-void savePresetAtomic(const Settings& s, const fs::path& file) {
+void savePresetAtomic(const Settings& s, const fs::path& file, const std::string& schemaRef) {
     const std::string name = file.string();
     if (auto problems = validate(s); !problems.empty()) {
         for (auto& problem : problems) problem = name + ": cannot save invalid settings: " + problem;
         throw SettingsError(problems);
     }
-    const std::string text = presetText(s, name);
+    const std::string text = presetText(s, name, schemaRef);
     const fs::path temp = name + ".tmp-" + std::to_string(::getpid());
     if (auto error = writeSynced(temp, text); !error.empty()) {
         throw SettingsError(name + ": cannot save preset: " + error);
@@ -134,7 +144,7 @@ void savePresetAtomic(const Settings& s, const fs::path& file) {
     if (ec) {
         std::error_code ignored;
         fs::remove(temp, ignored);
-        throw SettingsError(name + ": cannot save preset: cannot rename " + temp.string() + " over it: " + ec.message());
+        throw SettingsError(name + ": cannot save preset: cannot replace the file: " + ec.message());
     }
 }
 

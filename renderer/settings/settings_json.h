@@ -57,7 +57,8 @@ FieldValue readFieldValue(const FieldInfo& field, const nlohmann::json& value, c
 // Validates `s` (a preset that would not load is never written), then writes pretty JSON
 // (2-space indent, table order) to "<file>.tmp-<pid>", flushes it to disk and renames it over
 // `file`, so readers see the old or the new preset, never half of one. On failure the temporary
-// file is removed and SettingsError says what failed.
-void savePresetAtomic(const Settings& s, const std::filesystem::path& file);
+// file is removed and SettingsError says what failed (naming `file`, not the temporary one).
+// `schemaRef`: written first as "$schema" (editors find the JSON Schema through it) unless empty.
+void savePresetAtomic(const Settings& s, const std::filesystem::path& file, const std::string& schemaRef = "");
 
 }  // namespace st

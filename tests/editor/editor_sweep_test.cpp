@@ -116,6 +116,19 @@ TEST_F(EditorSweepTest, CancelStopsAfterThePointInHandAndKeepsThoseMeasured) {
     EXPECT_EQ(v.points.size(), v.done);
 }
 
+// Issue 21 #11: Cancel pressed once every point was in said "Cancelled after 4 of 4 points".
+TEST_F(EditorSweepTest, ACancelAfterTheLastPointLeavesTheRunDone) {
+    sweep.start(countRequest({1, 2}), livePreset(), std::nullopt, ST_PRESET_DIR);
+    ASSERT_EQ(sweep.view().state, State::Running);
+    pollUntilEnded(sweep, [&] { return sweep.view().done >= sweep.view().total; });
+    sweep.cancel();  // the child writes its charts, or has ended unseen: nothing is left to stop
+    pollUntilEnded(sweep);
+    const ui::SweepView& v = sweep.view();
+    EXPECT_EQ(v.state, State::Done) << (v.errors.empty() ? "" : v.errors[0]);
+    EXPECT_EQ(v.done, v.total);
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(v.folder) / "pareto.png"));
+}
+
 TEST_F(EditorSweepTest, ARefusedSweepSaysWhyAndStartsNothing) {
     ui::SweepRequest r = countRequest({1, 99});
     sweep.start(r, livePreset(), std::nullopt, ST_PRESET_DIR);

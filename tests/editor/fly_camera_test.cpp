@@ -88,3 +88,33 @@ TEST(FlyCameraTest, MiddleMousePansPositionAndTargetTogether) {
     EXPECT_NEAR(c.position.x, c.target.x, 1e-4f);
     EXPECT_NE(c.position.x, 0.0f);
 }
+
+// Issue 21 #3: an orbit around a picked point keeps the point's distance and its place in the
+// picture (its direction in the camera's own frame), and turns the view as a look would.
+TEST(OrbitCameraTest, ThePivotKeepsItsDistanceAndItsPlaceInThePicture) {
+    CameraSettings cam;
+    cam.position = {10.0f, 4.0f, 12.0f};
+    cam.target = {0.0f, 1.0f, 0.0f};
+    const glm::vec3 pivot{1.5f, 0.0f, 2.0f};  // a point off the view's centre, under the cursor
+    auto inCamera = [](const CameraSettings& c, glm::vec3 p) {
+        const glm::vec3 f = glm::normalize(c.target - c.position);
+        const glm::vec3 r = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+        const glm::vec3 u = glm::cross(r, f);
+        const glm::vec3 d = p - c.position;
+        return glm::vec3(glm::dot(d, r), glm::dot(d, u), glm::dot(d, f));
+    };
+    const glm::vec3 seen = inCamera(cam, pivot);
+    const float distance = glm::length(cam.position - pivot), targetDistance = glm::length(cam.target - cam.position);
+    ASSERT_TRUE(orbitCamera(cam, pivot, {120.0f, -40.0f}));
+    EXPECT_NEAR(glm::length(cam.position - pivot), distance, 1e-3f);
+    EXPECT_NEAR(glm::length(cam.target - cam.position), targetDistance, 1e-3f);
+    const glm::vec3 after = inCamera(cam, pivot);
+    EXPECT_NEAR(after.x, seen.x, 1e-3f);
+    EXPECT_NEAR(after.y, seen.y, 1e-3f);
+    EXPECT_NEAR(after.z, seen.z, 1e-3f);
+    // The yaw the mouse asked for: 120 px at 0.004 rad a pixel.
+    const glm::vec3 f = glm::normalize(cam.target - cam.position);
+    const glm::vec3 f0 = glm::normalize(glm::vec3{0.0f, 1.0f, 0.0f} - glm::vec3{10.0f, 4.0f, 12.0f});
+    EXPECT_NEAR(std::atan2(f.x, -f.z) - std::atan2(f0.x, -f0.z), 0.48f, 1e-3f);
+    EXPECT_FALSE(orbitCamera(cam, pivot, {0.0f, 0.0f}));
+}

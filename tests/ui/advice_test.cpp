@@ -111,6 +111,22 @@ TEST(AdviceTest, PanelsShowTheAdviceUnderTheirFigures) {
     EXPECT_LE(d.rect("advice.peter-panning").min.x, accuracy.max.x);
 }
 
+// Issue 21 #6: "... likely fix: a shorter cascad" ran off the Accuracy panel's edge.
+TEST(AdviceTest, AWarningWrapsInsideTheAccuracyPanel) {
+    test::UiDriver d({1000.0f, 700.0f});
+    FrameStats stats = test::fakeFrameStats();
+    d.in.stats = &stats;
+    d.in.accuracy.state = ui::AccuracyView::State::Done;
+    d.in.accuracy.all.receivers = 1000;
+    d.in.accuracy.warnings = {"cascade 3: 61 % of its map holds no receiver the camera sees (the map covers far more than "
+                              "the frame uses); likely fix: a shorter cascades.shadowDistance or a tighter fit"};
+    d.frames(3);
+    const ui::ItemRect panel = d.rect("window.Accuracy");
+    const ui::ItemRect warning = d.rect("accuracy.warning.0");
+    EXPECT_LE(warning.max.x, panel.max.x) << "cut at the panel's edge";
+    EXPECT_GT(warning.max.y - warning.min.y, 2.0f * ImGui::GetTextLineHeight()) << "wrapped over lines";
+}
+
 TEST(AdviceTest, AccuracyRulesWaitForFigures) {
     ui::AccuracyView v;
     v.all.receivers = 1000;

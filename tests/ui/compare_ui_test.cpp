@@ -83,6 +83,28 @@ TEST_F(CompareUiTest, SetAsASnapshotsTheSettingsAndTurnsTheSplitOn) {
     EXPECT_FALSE(d.drawn("ab.divider"));
 }
 
+// Issue 21 #10: with the divider near the scene's edge a label ran under the panel ("live: 1.089").
+TEST_F(CompareUiTest, TheLabelsStayInsideTheSceneWithTheDividerAtAnEdge) {
+    d.click("menu.compare");
+    d.frame();
+    d.click("menu.compare.setA");
+    d.frames(2);
+    ASSERT_TRUE(d.last.abSplit);
+    const float left = d.last.scenePos.x, right = left + d.last.sceneSize.x;
+    for (const float to : {right + 50.0f, left - 50.0f}) {
+        const ImVec2 grip = d.rect("ab.divider").center();
+        d.drag(grip, {to, grip.y});
+        d.frames(2);
+        const ui::ItemRect a = d.rect("ab.labelA"), live = d.rect("ab.labelLive");
+        EXPECT_GE(a.min.x, left) << "divider " << d.last.abDivider;
+        EXPECT_LE(live.max.x, right) << "divider " << d.last.abDivider;
+        EXPECT_LE(a.max.x, right);
+        EXPECT_GE(live.min.x, left);
+        const bool apart = a.max.x <= live.min.x || live.max.x <= a.min.x || a.max.y <= live.min.y || live.max.y <= a.min.y;
+        EXPECT_TRUE(apart) << "the labels overlap";
+    }
+}
+
 TEST_F(CompareUiTest, DraggingTheDividerMovesItAndNotTheSettings) {
     d.click("menu.compare");
     d.frame();
@@ -161,6 +183,27 @@ TEST_F(CompareUiTest, ClickingAChartPointAppliesItsValuesAsOneUndoStep) {
     EXPECT_EQ(d.s, before);
     d.pressKey(kKeyZ, true);
     EXPECT_EQ(d.s, before);  // and there was no other step
+}
+
+// Issue 21 #11: "applied lambda=0.95" and the chart stayed after the camera moved.
+TEST_F(CompareUiTest, TheChartAndTheAppliedNoteGoStaleWhenTheViewMoves) {
+    openSweepPanel();
+    ui::SweepView v = doneView();
+    v.measuredFrom = d.s;
+    d.in.sweep = &v;
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("sweep.stale"));
+    d.click("sweep.point.1");
+    d.frames(2);
+    EXPECT_TRUE(d.drawn("sweep.applied"));
+    EXPECT_FALSE(d.drawn("sweep.stale")) << "applying a point changes no camera";
+    d.s.bias.slope += 0.5f;  // another edit: the note no longer describes the settings
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("sweep.applied"));
+    d.s.camera.position.x += 3.0f;  // the app's fly gesture
+    d.frames(2);
+    EXPECT_TRUE(d.drawn("sweep.stale"));
+    EXPECT_TRUE(d.drawn("sweep.point.1")) << "still there to read, greyed";
 }
 
 TEST_F(CompareUiTest, ACancelledSweepLeavesTheDocumentAsItWas) {

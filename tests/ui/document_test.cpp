@@ -75,8 +75,30 @@ TEST_F(DocumentTest, SavingInvalidSettingsFailsWithMessagesAndWritesNothing) {
     EXPECT_FALSE(saveDocument(doc, s, dir / "x.json"));
     EXPECT_FALSE(doc.errors.empty());
     EXPECT_FALSE(fs::exists(dir / "x.json"));
-    EXPECT_FALSE(saveDocument(doc, Settings{}, dir / "no-such-dir" / "x.json"));
-    EXPECT_FALSE(doc.errors.empty());
+}
+
+// Issue 21 #8: Save As into a missing folder failed with "cannot create mine/tuned.json.tmp-25083:
+// No such file or directory", and the file saved dropped "$schema".
+TEST_F(DocumentTest, SaveAsIntoAMissingFolderCreatesItAndKeepsTheSchemaReference) {
+    fs::create_directories(dir / "presets");
+    write(dir / "presets" / "a.json", R"({"$schema": "../schema/preset.schema.json", "version": 1})");
+    Document doc;
+    Settings s;
+    ASSERT_TRUE(loadDocument(doc, dir / "presets" / "a.json", s));
+    ASSERT_TRUE(saveDocument(doc, s, dir / "presets" / "mine" / "tuned.json")) << doc.errors.front();
+    EXPECT_NE(doc.status.find("created the folder"), std::string::npos) << doc.status;
+    const nlohmann::json saved = loadJsonFile(dir / "presets" / "mine" / "tuned.json");
+    EXPECT_EQ(saved.value("$schema", ""), "../../schema/preset.schema.json") << "rebased for the new folder";
+    ASSERT_TRUE(saveDocument(doc, s, dir / "presets" / "b.json"));
+    EXPECT_EQ(loadJsonFile(dir / "presets" / "b.json").value("$schema", ""), "../schema/preset.schema.json");
+    EXPECT_EQ(doc.status, "Saved " + (dir / "presets" / "b.json").string());
+
+    // A folder that cannot be made (a file is in the way): the reason, and no temporary name.
+    write(dir / "plain", "x");
+    EXPECT_FALSE(saveDocument(doc, s, dir / "plain" / "x.json"));
+    ASSERT_FALSE(doc.errors.empty());
+    EXPECT_EQ(doc.errors.front().find(".tmp"), std::string::npos) << doc.errors.front();
+    EXPECT_NE(doc.errors.front().find((dir / "plain" / "x.json").string()), std::string::npos) << doc.errors.front();
 }
 
 TEST_F(DocumentTest, SaveAsPathsAreResolvedAgainstThePresetFolder) {

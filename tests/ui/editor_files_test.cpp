@@ -126,6 +126,32 @@ TEST_F(EditorFilesTest, FileOpenCompletesJsonPathsAndLoadsTheChosenPreset) {
     EXPECT_FALSE(d.drawn("open.path")) << "the window closes once the preset is loaded";
 }
 
+// Issue 21 #7: typing into File > Open appended to the last path; after a failed Enter the field
+// lost the keyboard and the next Tab swapped the main and side views.
+TEST_F(EditorFilesTest, FileOpenSelectsTheLastPathAndKeepsTheKeyboardAfterAFailedEnter) {
+    Settings other;
+    other.cascades.lambda = 0.9f;
+    savePresetAtomic(other, scratch.path / "presets" / "boat.json");
+    d.click("menu.file");
+    d.click("menu.open");
+    d.frames(2);
+    d.typeText((scratch.path / "presets" / "nothing-here.json").string().c_str());
+    d.pressKey(kKeyEnter);
+    d.frames(2);
+    ASSERT_TRUE(d.drawn("open.path")) << "a failed load keeps the window";
+    EXPECT_TRUE(ImGui::GetIO().WantTextInput) << "and the cursor in its field";
+    d.pressKey(kKeyTab);
+    EXPECT_FALSE(d.last.swapSideView);
+    d.pressKey(kKeyEscape);  // leave the field, close the window
+    d.click("menu.file");
+    d.click("menu.open");
+    d.frames(2);
+    EXPECT_TRUE(ImGui::GetIO().WantTextInput);
+    d.typeText((scratch.path / "presets" / "boat.json").string().c_str());  // over the last path
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.ui().presetFile(), scratch.path / "presets" / "boat.json") << (d.ui().errors().empty() ? "" : d.ui().errors()[0]);
+}
+
 TEST_F(EditorFilesTest, RevertReloadsTheFileAfterAskingAndIsOffWhenClean) {
     savePresetAtomic(d.s, scratch.path / "presets" / "a.json");
     ASSERT_TRUE(d.ui().openPreset(scratch.path / "presets" / "a.json", d.s));

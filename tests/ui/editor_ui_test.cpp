@@ -137,6 +137,30 @@ TEST_F(EditorUiTest, TypedNumbersApplyOnEnterOrFocusLossNotPerKeystroke) {
 }
 
 // Issue 13 #7: "filter size -5 becomes 3".
+// Issue 21 #11: "9 is outside 1 .. 8: not applied" outlived the values it was about.
+TEST_F(EditorUiTest, ARefusalGoesWithUndoAndWithALoad) {
+    d.ui().setDocument(d.s, scratch.path / "mine.json");
+    st::savePresetAtomic(d.s, scratch.path / "mine.json");
+    d.in.presetFiles = {scratch.path / "mine.json"};
+    dragElevation();  // something to undo
+    const auto refuse = [&] {
+        d.ctrlClick(d.rect("cascades.count").center());
+        d.typeText("9");
+        d.pressKey(kKeyEnter);
+        d.frame();
+        return d.drawn("cascades.count#refused");
+    };
+    ASSERT_TRUE(refuse());
+    d.pressKey(kKeyZ, true);
+    d.frame();
+    EXPECT_FALSE(d.drawn("cascades.count#refused")) << "undo replaced the settings";
+    ASSERT_TRUE(refuse());
+    EXPECT_FALSE(d.ui().dirty());
+    d.click("preset:mine.json");
+    d.frames(2);
+    EXPECT_FALSE(d.drawn("cascades.count#refused")) << "the preset was loaded again";
+}
+
 TEST_F(EditorUiTest, ANegativeFilterSizeTypedIntoItsBoxIsRefused) {
     d.s.filter.kind = FilterKind::PcfNxN;
     d.s.filter.size = 5;
@@ -181,13 +205,27 @@ TEST(EditorUiTallTest, BiasPerCascadeStartsAtOnesAndClears) {
     d.frame();
     EXPECT_TRUE(d.drawn("bias.normalOffsetScale#unused"));
     EXPECT_FALSE(d.drawn("bias.constantScale#unused"));
+    // A row per cascade, greyed while one value serves all (issue 21 #5): dragging it does nothing.
+    for (const char* row : {"bias.constantScale[0]#single", "bias.constantScale[1]#single", "bias.constantScale[2]#single"})
+        EXPECT_TRUE(d.drawn(row)) << row;
+    EXPECT_FALSE(d.drawn("bias.constantScale[3]#single"));
+    const ImVec2 row1 = d.rect("bias.constantScale[1]#single").center();
+    d.drag(row1, {row1.x + 80.0f, row1.y});
+    EXPECT_TRUE(d.s.bias.constantScale.empty()) << "a greyed row was edited";
     d.click("bias.constantScale#perCascade");
     EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, 1.0f, 1.0f}));
+    d.frame();
+    EXPECT_FALSE(d.drawn("bias.constantScale[1]#single")) << "the rows are live now";
+    const ImVec2 live1 = d.rect("bias.constantScale[1]").center();
+    d.drag(live1, {live1.x + 80.0f, live1.y});
+    EXPECT_EQ(d.s.bias.constantScale[0], 1.0f);
+    EXPECT_GT(d.s.bias.constantScale[1], 1.0f) << "cascade 1's own factor";
+    const float dragged = d.s.bias.constantScale[1];
     d.ctrlClick(d.rect("cascades.count").center());  // fewer cascades: the list follows the count
     d.typeText("2");
     d.pressKey(kKeyEnter);
     ASSERT_EQ(d.s.cascades.count, 2);
-    EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, 1.0f}));
+    EXPECT_EQ(d.s.bias.constantScale, (std::vector<float>{1.0f, dragged})) << "the factors kept, the third cut";
     EXPECT_TRUE(d.last.settingsValid);
     d.frame();
     d.click("bias.constantScale#sameForAll");

@@ -146,6 +146,29 @@ TEST(LayoutTest, DraggedColumnWidthIsKeptInThePrefsAndMovesTheScene) {
     EXPECT_NEAR(next.last.scenePos.x, sceneLeft + 60.0f, 1.0f);
 }
 
+// Issue 21 #5: after the window was made small, layout.json kept "leftWidth": 238 and the next
+// launch was cramped. Shrinking the window changes no kept width; a width dragged in a small
+// window is kept no narrower than a column's minimum.
+TEST(LayoutTest, ASmallWindowDoesNotNarrowTheKeptColumns) {
+    UiDriver d({1600.0f, 900.0f});
+    d.frames(2);
+    const ui::LayoutPrefs before = d.ui().layoutPrefs();
+    const float sceneLeft = d.last.scenePos.x;
+    for (const ImVec2 size : {ImVec2{1000.0f, 700.0f}, ImVec2{700.0f, 500.0f}, ImVec2{520.0f, 400.0f}}) {
+        ImGui::GetIO().DisplaySize = size;
+        d.frames(3);
+    }
+    EXPECT_EQ(d.ui().layoutPrefs(), before) << "leftWidth " << d.ui().layoutPrefs().leftWidth;
+    const ui::Rect settings{d.rect("window.Settings").min, d.rect("window.Settings").max};
+    d.drag({settings.max.x - 3.0f, settings.max.y - 3.0f}, {settings.max.x - 80.0f, settings.max.y - 3.0f});
+    d.frames(2);
+    EXPECT_GE(d.ui().layoutPrefs().leftWidth, 260.0f) << "a column's minimum";
+    ImGui::GetIO().DisplaySize = {1600.0f, 900.0f};
+    d.ui().setLayoutPrefs(before);
+    d.frames(3);
+    EXPECT_NEAR(d.last.scenePos.x, sceneLeft, 1.0f);
+}
+
 TEST(StatusBarTest, FrameRateIsFramesOverTheirTime) {
     ui::History h(240);
     EXPECT_EQ(ui::frameRateText(h), "-- fps");

@@ -139,3 +139,27 @@ TEST_F(MapCostUiTest, ASlowRedrawAsksEvenWhenTheMemoryIsSmall) {
     d.click("mapcost.apply");
     EXPECT_EQ(d.s.cascades.mapSize, 2048);
 }
+
+// Issue 21 #12: "4 x 8192 maps: 1.00 GiB of shadow maps. Apply?" gave no time when no shadow pass
+// had been timed; the cost model's figure stands in, and says so.
+TEST(MapCost, WithoutATimedPassTheModelledRedrawIsGiven) {
+    FrameStats stats = fakeFrameStats();
+    for (CascadeStats& c : stats.cascades) c.gpuMs = 0.0;
+    stats.modelShadowMs = 40.0;  // 4 x 1024 maps: 4 Mi texels; 4 x 8192 has 64 times as many
+    EXPECT_FALSE(ui::measuredMsPerTexel(stats, cascades(4, 1024)));
+    const auto rate = ui::modelledMsPerTexel(stats, cascades(4, 1024));
+    ASSERT_TRUE(rate);
+    const ui::MapCost cost = ui::mapCost(cascades(4, 8192), rate, true);
+    EXPECT_DOUBLE_EQ(*cost.redrawMs, 2560.0);
+    EXPECT_EQ(ui::costQuestion(cascades(4, 8192), cost),
+              "4 x 8192 maps: 1.00 GiB of shadow maps, about 2.6 s per redraw (modelled: no shadow pass timed yet). Apply?");
+}
+
+TEST_F(MapCostUiTest, AModelledSlowRedrawAsksWhenNothingWasTimed) {
+    for (CascadeStats& c : stats.cascades) c.gpuMs = 0.0;
+    stats.modelShadowMs = 80.0;  // 2048 models 320 ms
+    d.frame();
+    pick(2048);  // 64 MiB: only the time asks
+    ASSERT_TRUE(d.drawn("mapcost.question"));
+    EXPECT_EQ(d.s.cascades.mapSize, 1024);
+}

@@ -59,3 +59,27 @@ TEST(ProbeTest, NothingIsAskedOverAPanelOrWhileAButtonIsDown) {
     d.frames(2);
     EXPECT_TRUE(d.last.probeWanted);
 }
+
+// Issue 21 #3: the probe's tooltip was drawn over the Sweep panel's field list and over the
+// Unsaved-changes question.
+TEST(ProbeTest, NoReadoutWhileAPopupOrAModalIsOpen) {
+    UiDriver d;
+    FrameStats stats = fakeFrameStats();
+    d.in.stats = &stats;
+    d.frames(2);
+    const ImVec2 origin = d.last.scenePos;
+    const ImVec2 over{origin.x + 100.0f, origin.y + 40.0f};
+    d.in.probe = readout(100, 40);
+    d.mouse(over, false);
+    d.frames(2);
+    ASSERT_TRUE(d.drawn("probe"));
+    d.s.light.elevation += 5.0f;  // unsaved: closing asks first
+    d.frame();
+    d.ui().requestQuit();
+    d.frames(2);
+    ASSERT_TRUE(d.drawn("confirm.discard")) << "the Unsaved-changes question is up";
+    d.mouse(over, false);
+    d.frames(2);
+    EXPECT_FALSE(d.last.probeWanted);
+    EXPECT_FALSE(d.drawn("probe"));
+}

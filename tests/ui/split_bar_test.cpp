@@ -32,6 +32,18 @@ TEST(SplitBarTest, DraggedSplitMapsLinearlyAndStaysBetweenItsNeighbours) {
     EXPECT_LT(ui::draggedSplit(inner, 2, 0.1f, 400.0f, 2.0f), 400.0f);
 }
 
+// Issue 21 #12: a drag made "Manual splits 28.6 / 59.5 / 59.7 m", a 0.2 m cascade.
+TEST(SplitBarTest, NoHandleMakesACascadeThinnerThanAPercentOfTheRangeOrHalfAMetre) {
+    const std::vector<float> inner{28.6f, 59.5f, 90.0f};
+    EXPECT_GE(ui::clampedSplit(inner, 2, 0.1f, 150.0f, 59.7f), 59.5f + 1.499f) << "1 % of 150 m";
+    EXPECT_LE(ui::clampedSplit(inner, 2, 0.1f, 150.0f, 149.9f), 150.0f - 1.499f) << "the last cascade too";
+    EXPECT_GE(ui::clampedSplit({2.0f, 4.0f}, 1, 0.1f, 10.0f, 2.1f), 2.5f - 1e-5f) << "half a metre on a short range";
+    // Neighbours already closer than that (typed values): a quarter of their gap, still between them.
+    const float tight = ui::clampedSplit({10.0f, 10.4f, 10.8f}, 1, 0.1f, 150.0f, 10.0f);
+    EXPECT_GT(tight, 10.0f);
+    EXPECT_LT(tight, 10.8f);
+}
+
 TEST(SplitBarTest, DraggingAHandleSetsManualSplitsAsOneUndoStep) {
     UiDriver d;
     FrameStats stats = fakeFrameStats();  // splits 0.1 | 6.2 | 24.5 | 92 | 400 m

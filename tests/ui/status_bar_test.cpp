@@ -22,3 +22,29 @@ TEST(StatusBarTest, SceneRenderTimeScaleAndReuseAreShownApart) {
     EXPECT_GT(d.rect("status.sceneRender").min.x, d.rect("status.fps").max.x) << "beside the frame rate";
     EXPECT_EQ(d.rect("status.sceneRender").min.y, d.rect("status.fps").min.y);
 }
+
+// Issue 21 #3: the fps was a mean over 4 s (57 -> 20 fps over 4 s of motion while each frame took
+// 110-150 ms); it is the median of the last kFpsFrames frames.
+TEST(StatusBarTest, FrameRateIsTheMedianOfTheLastFrames) {
+    ui::History h(240);
+    for (int i = 0; i < 200; ++i) h.push(20.0f);
+    for (int i = 0; i < int(ui::kFpsFrames); ++i) h.push(i == 3 ? 900.0f : i % 2 ? 120.0f : 130.0f);
+    // The last 15: one 900 ms stall, seven 120 and seven 130 ms frames: the median is 130 ms.
+    EXPECT_EQ(ui::frameRateText(h), "7.7 fps (130.0 ms)");
+    ui::History ring(8);  // the ring wrapped: the newest values are before its write position
+    for (float v : {1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f, 8.0f, 9.0f, 10.0f, 11.0f}) ring.push(v);
+    EXPECT_EQ(ring.recentMedian(3), 10.0f);
+    EXPECT_EQ(ring.recentMedian(4), 9.5f);
+    EXPECT_EQ(ring.recentMedian(100), 7.5f) << "all eight kept";
+}
+
+// Issue 21 #9: the editor showed a 520x380 scene, and `render` of the saved preset wrote 640x360.
+TEST(StatusBarTest, TheStatusBarSaysWhichSizeASaveRendersAt) {
+    EXPECT_EQ(ui::saveSizeText(640, 360, 520.0f, 380.0f), "saves render at 640 x 360 (the preset's output size; framing differs)");
+    EXPECT_EQ(ui::saveSizeText(640, 360, 640.0f, 360.0f), "saves render at 640 x 360, as shown");
+    UiDriver d;
+    d.s.output.width = 640, d.s.output.height = 360;
+    d.frames(3);
+    ASSERT_TRUE(d.drawn("status.saveSize"));
+    EXPECT_EQ(d.rect("status.saveSize").min.y, d.rect("status.fps").min.y) << "in the status bar";
+}
