@@ -12,5 +12,6 @@ void addCompareCommand(CLI::App& cli, int& exitCode);
 void addExportCommand(CLI::App& cli, int& exitCode);
 void addCalibrateCommand(CLI::App& cli, int& exitCode);
 void addTuneCommand(CLI::App& cli, int& exitCode);
+void addCheckCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     st::app::addExportCommand(cli, exitCode);
     st::app::addCalibrateCommand(cli, exitCode);
     st::app::addTuneCommand(cli, exitCode);
+    st::app::addCheckCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

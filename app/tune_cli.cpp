@@ -6,14 +6,29 @@
 
 #include <cstdio>
 #include <memory>
+#include <regex>
 
 namespace st::app {
+namespace {
+
+// "k/n" with 1 <= k <= n <= 1000, as a Slurm array's task id over its count reads.
+bool parseShard(const std::string& text, int& k, int& n) {
+    std::smatch m;
+    static const std::regex form(R"(\s*(\d{1,4})\s*/\s*(\d{1,4})\s*)");
+    if (!std::regex_match(text, m, form)) return false;
+    k = std::stoi(m[1]);
+    n = std::stoi(m[2]);
+    return k >= 1 && n >= 1 && k <= n && n <= 1000;
+}
+
+}  // namespace
 
 void addTuneCommand(CLI::App& cli, int& exitCode) {
     auto opt = std::make_shared<TuneCommandOptions>();
     auto budgetMs = std::make_shared<double>(0.0);
     auto budgetMiB = std::make_shared<double>(0.0);
     auto size = std::make_shared<std::string>();
+    auto shard = std::make_shared<std::string>();
     CLI::App* cmd = cli.add_subcommand(
         "tune", "Find the best settings for a preset's scene within a cost budget, by search, and explain them");
     cmd->add_option("preset", opt->preset, "Preset to tune (its scene, camera, light and size stay)")->required();
@@ -48,8 +63,20 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--profile", opt->costProfile,
                     "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");
+    cmd->add_option("--shard", *shard,
+                    "k/n: this process is shard k of n tunes of the same command on one shared --out folder; each "
+                    "measures its share of every round, and shard 1 writes the results (docs/tuning.md#shards)");
+    cmd->add_option("--shard-wait", opt->shardWaitSeconds,
+                    "Seconds to wait for another shard's measurement before measuring it here")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");
-    cmd->callback([opt, budgetMs, budgetMiB, size, ms, mib, &exitCode] {
+    cmd->callback([opt, budgetMs, budgetMiB, size, shard, ms, mib, &exitCode] {
+        if (!shard->empty() && !parseShard(*shard, opt->shardIndex, opt->shardCount)) {
+            std::fprintf(stderr, "error: --shard: expected k/n with 1 <= k <= n <= 1000, got '%s'\n", shard->c_str());
+            exitCode = 2;
+            return;
+        }
         if (!size->empty()) {
             opt->size = parseSize(*size);
             if (!opt->size) {

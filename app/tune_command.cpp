@@ -67,6 +67,8 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.seed = opt.seed;
         to.evaluations = opt.evaluations;
         to.stopAfter = opt.stopAfter;
+        to.shard = {opt.shardIndex, opt.shardCount};
+        to.shardWaitSeconds = opt.shardWaitSeconds;
         to.profile = &profile;
         to.machine = deviceRendererName() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
         ProgressLine progress;

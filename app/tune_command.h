@@ -24,6 +24,8 @@ struct TuneCommandOptions {
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile
     bool debugGl = false;
+    int shardIndex = 1, shardCount = 1;  // --shard k/n
+    double shardWaitSeconds = 600.0;
 };
 
 // Exit codes: 0 tuned; 1 bad input, or no settings within the budget (the message names the

@@ -3,6 +3,8 @@
 # Idempotent: exits at once when everything is present. Run as root (or with sudo).
 # fonts-dejavu-core: every chart and label names its DejaVu family (report/chart_fonts.h), so
 # other installed fonts cannot change an image. jq: the command-line tests read JSON with it.
+# chromium, libxml2-utils: the check tests open its HTML report in headless Chromium and validate
+# its JUnit XML with xmllint --schema (tests/check).
 set -euo pipefail
 
 packages=(
@@ -19,6 +21,7 @@ packages=(
   jq
   libgtest-dev googletest
   xvfb xauth xdotool
+  chromium libxml2-utils
   clang-14 libclang-rt-14-dev llvm-14
 )
 

@@ -60,6 +60,12 @@
 #define ST_SCREEN_BLUR 1
 #define ST_SCREEN_COUNT 2
 
+// ContactShadows: a short screen-space march toward the sun through the camera's depth near each
+// receiver, its factor combined with the map's (renderer/render/screen_shadow.h; Godot PR #118045)
+#define ST_CONTACT_OFF 0
+#define ST_CONTACT_MARCH 1
+#define ST_CONTACT_COUNT 2
+
 // CascadeStorage: one depth array layer per cascade; one atlas texture with a tile per cascade
 // (seed 003); one texture per cascade (seed 002)
 #define ST_STORAGE_ARRAY 0

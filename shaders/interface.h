@@ -49,6 +49,7 @@
 #define ST_BINDING_SCREEN_SHADOW 17  // R32F, full size: the factor the image shows
 #define ST_BINDING_SCREEN_SOURCE 18  // RG32F: x factor, y view depth (0: no surface)
 #define ST_BINDING_SCREEN_FULL 19    // RG32F, the full-size mask: its depths guide the upsample
+#define ST_BINDING_SCREEN_DEPTH 20   // D32F, the mask pass's depth: contact shadows find the surface
 
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws
@@ -155,7 +156,14 @@
     M(int, screenRadius)      /* taps each side */                                                \
     M(int, screenAxis)        /* 0: blur along x, 1: along y */                                   \
     M(int, screenDownsample)  /* N: the blurred mask is 1/N of the full size */                   \
-    M(float, screenDepthSigma) /* depth-aware weight, fraction of the view depth; 0 = off */
+    M(float, screenDepthSigma) /* depth-aware weight, fraction of the view depth; 0 = off */     \
+    M(mat4, contactViewProj)   /* contact shadows: ws -> clip of the mask's camera */             \
+    M(mat4, contactClipToWs)   /* its inverse */                                                  \
+    M(vec4, contactToSun)      /* xyz: unit vector toward the sun */                              \
+    M(float, contactLength)    /* metres marched toward the sun */                                \
+    M(int, contactSteps)       /* depth-buffer samples along the march */                         \
+    M(float, contactThickness) /* metres behind the depth buffer a sample still counts as hit */  \
+    M(int, contactUseMask)     /* 1: combine with the mask's own factor (no blur ran) */
 
 #ifdef __cplusplus
 // ---------------------------------------------------------------------------------------------

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <thread>
 
 namespace st::tune {
 namespace fs = std::filesystem;
@@ -81,6 +82,7 @@ Settings cheapest(Settings s) {
     s.cascades.blendBand = 0.0f;
     s.filter.kind = FilterKind::Hard;
     s.filter.screenSpace = ScreenSpace::Off;
+    s.filter.contact = ContactShadows::Off;
     return s;
 }
 
@@ -105,6 +107,9 @@ Settings screenSize(Settings s) {
     return s;
 }
 
+// Ctrl-C while waiting for another shard's measurement.
+struct StoppedWhileWaiting {};
+
 void widenLimits(Objective& o, const std::vector<std::pair<std::string, double>>& more) {
     for (const auto& [key, limit] : more)
         for (auto& [k, l] : o.atMost)
@@ -123,9 +128,25 @@ public:
         views_ = tuneViews(input_, opt_.views, opt_.holdOutEvery);
         references();
         claimFolder(opt_.outDir, identity());
-        journal_.emplace(opt_.outDir / "evaluations.jsonl");
+        journal_.emplace(opt_.outDir, opt_.shard);
         resumed_ = int(journal_->size());
         if (resumed_ > 0) say("resuming: " + std::to_string(resumed_) + " evaluations journaled in " + opt_.outDir.string());
+        if (opt_.shard.sharded())
+            say("shard " + std::to_string(opt_.shard.index) + "/" + std::to_string(opt_.shard.count) + ": measuring into " +
+                journal_->file().string() + " and reading the other shards' journals there");
+        try {
+            return tune(t0);
+        } catch (const StoppedWhileWaiting&) {
+            TuneOutcome out;
+            out.stopped = true;
+            out.evaluations = made_;
+            out.message = "stopped while waiting for another shard; run the same command to resume";
+            return out;
+        }
+    }
+
+private:
+    TuneOutcome tune(std::chrono::steady_clock::time_point t0) {
         evaluator_.emplace(session_, presetDir_, views_, *opt_.profile, Objective{opt_.objective, {}});
         screener_.emplace(session_, presetDir_, std::vector<View>{views_.front()}, *opt_.profile, Objective{opt_.objective, {}});
         resolveBudget();
@@ -151,6 +172,7 @@ public:
             return (opt_.stopRequested && opt_.stopRequested()) || (opt_.stopAfter >= 0 && made_ >= opt_.stopAfter);
         };
         so.progress = [this](const SearchProgress& p) { progress(p); };
+        if (opt_.shard.sharded()) so.plan = [this](const Settings& from, const std::vector<Settings>& next) { plan(from, next); };
         so.screen = [this](const Settings& s) { return judge(measured(screenSize(s), "screen"), objective_); };
         const Space space = defaultSpace(input_);
         std::vector<Settings> from = starts(input_);
@@ -174,6 +196,13 @@ public:
         const Candidate& best = result_.evaluated[*result_.best];
         writeOutputs(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         out.evaluations = made_;
+        out.fromShards = fromShards_;
+        if (!writes()) {
+            out.message = "shard " + std::to_string(opt_.shard.index) + "/" + std::to_string(opt_.shard.count) + " done: " +
+                          std::to_string(made_) + " measured here, " + std::to_string(fromShards_) +
+                          " by other shards; shard 1 writes the results to " + opt_.outDir.string();
+            return out;
+        }
         out.message = "tuned: " + errorText(opt_.objective, best.eval.error) + " " + sweep::errorFigure(opt_.objective).label +
                       " (input " + errorText(opt_.objective, judge(inputRaw, objective_).error) + ") at " +
                       fixed(best.eval.costMs, 1) + " ms modelled (budget " + budgetText(budget_) + ") -> " +
@@ -181,20 +210,86 @@ public:
         return out;
     }
 
-private:
     void say(const std::string& line) const {
         if (opt_.progress) opt_.progress(line);
     }
 
     // The journaled measurement of `s` on `views`, or a new one (journaled at once).
-    Evaluation measured(const Settings& s, const std::string& views) {
+    // A sharded tune waits for the shard that owns `s` unless `waitForOwner` is false.
+    Evaluation measured(const Settings& s, const std::string& views, bool waitForOwner = true) {
         if (std::optional<Evaluation> e = journal_->find(s, views)) return *e;
+        if (opt_.shard.sharded()) {
+            if (std::optional<Evaluation> e = fromAnotherShard(s, views, waitForOwner)) return *e;
+        }
         const auto t0 = std::chrono::steady_clock::now();
         Evaluation e = views == "screen" ? screener_->measure(s, false) : evaluator_->measure(s, views == "held-out");
         evalMs_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         journal_->add(s, views, e);
         ++made_;
         return e;
+    }
+
+    bool writes() const { return opt_.shard.index == 1; }
+
+    // The measurement of a point another shard owns, once it is in that shard's journal; nothing
+    // when this shard owns it, or when the others fell silent (then this shard measures it).
+    std::optional<Evaluation> fromAnotherShard(const Settings& s, const std::string& views, bool wait) {
+        journal_->refresh();
+        if (std::optional<Evaluation> e = journal_->find(s, views)) return ++fromShards_, e;
+        const int owner = ownerOf(s, views, opt_.shard.count);
+        if (!wait || owner == opt_.shard.index || othersSilent_) return std::nullopt;
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto deadline = t0 + std::chrono::duration<double>(opt_.shardWaitSeconds);
+        while (std::chrono::steady_clock::now() < deadline) {
+            if (opt_.stopRequested && opt_.stopRequested()) throw StoppedWhileWaiting{};
+            if (!measureAhead(s)) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            journal_->refresh();
+            if (std::optional<Evaluation> e = journal_->find(s, views)) return ++fromShards_, e;
+        }
+        othersSilent_ = true;
+        say("warning: shard " + std::to_string(owner) + "/" + std::to_string(opt_.shard.count) + " wrote nothing in " +
+            fixed(opt_.shardWaitSeconds, 0) + " s; this shard measures every point from now on");
+        return std::nullopt;
+    }
+
+    // A sharded round's plan: the neighbours the search will try from `from`, in its order. While
+    // this shard waits for another's measurement, it measures what it owns of the next few
+    // neighbours, as the search would (screened first when `from` is within the budget); every
+    // search then finds them in the journals. The window bounds the work spent on a round the
+    // search leaves early (its first better neighbour ends it).
+    void plan(const Settings& from, std::vector<Settings> next) {
+        planFrom_ = from;
+        plan_ = std::move(next);
+    }
+
+    bool owned(const Settings& s, const std::string& views) const {
+        return ownerOf(s, views, opt_.shard.count) == opt_.shard.index && !journal_->find(s, views);
+    }
+
+    // One measurement ahead of `waitedFor` in the plan: true when it made one.
+    bool measureAhead(const Settings& waitedFor) {
+        std::size_t i = 0;
+        while (i < plan_.size() && !(plan_[i] == waitedFor) && !(screenSize(plan_[i]) == waitedFor)) ++i;
+        const std::optional<Evaluation> from = journal_->find(planFrom_, "tuned");
+        if (i == plan_.size() || !from) return false;
+        const Evaluation at = judge(*from, objective_);
+        const bool screen = at.valid && at.constraintsMet && budget_.fits(at);
+        const std::optional<Evaluation> fromScreen = journal_->find(screenSize(planFrom_), "screen");
+        const std::size_t end = std::min(plan_.size(), i + 1 + 2 * std::size_t(opt_.shard.count));
+        for (std::size_t k = i + 1; k < end; ++k) {
+            const Settings& s = plan_[k];
+            if (screen && owned(screenSize(s), "screen")) return measured(screenSize(s), "screen", false), true;
+            if (!owned(s, "tuned")) continue;
+            if (screen) {
+                const std::optional<Evaluation> mine = journal_->find(screenSize(s), "screen");
+                if (!mine || !fromScreen) continue;
+                const Evaluation a = judge(*mine, objective_), b = judge(*fromScreen, objective_);
+                if (!a.valid || !b.valid || a.error >= b.error) continue;
+            }
+            measured(s, "tuned", false);
+            return true;
+        }
+        return false;
     }
 
     void references() {
@@ -287,16 +382,21 @@ private:
 
     void writeOutputs(const Candidate& best, double seconds) {
         const fs::path& dir = opt_.outDir;
-        const Json tuned = sweep::presetInFolder(dir, presetDir_, toOrderedJson(best.settings));
-        writeTextAtomic(dir / "tuned.json", tuned.dump(2) + "\n");
-        loadPreset(dir / "tuned.json");  // never leave a preset that does not load again
-        writeFront(best);
+        if (writes()) {
+            const Json tuned = sweep::presetInFolder(dir, presetDir_, toOrderedJson(best.settings));
+            writeTextAtomic(dir / "tuned.json", tuned.dump(2) + "\n");
+            loadPreset(dir / "tuned.json");  // never leave a preset that does not load again
+            writeFront(best);
+        }
+        // Every shard makes the measurements below, in the same order, so they share them.
         const Evaluator judged = [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); };
         const Evaluation inputEval = judged(input_);
         const Explanation why = explain(input_, inputEval, best.settings, best.eval, opt_.objective, judged);
-        writeTextAtomic(dir / "explain.json", toJson(why).dump(2) + "\n");
-        writeTextAtomic(dir / "explain.md", toMarkdown(why, "Why " + opt_.preset.stem().string() + " was tuned this way"));
-        for (const Explained& x : why.changes) say("  " + x.line);
+        if (writes()) {
+            writeTextAtomic(dir / "explain.json", toJson(why).dump(2) + "\n");
+            writeTextAtomic(dir / "explain.md", toMarkdown(why, "Why " + opt_.preset.stem().string() + " was tuned this way"));
+            for (const Explained& x : why.changes) say("  " + x.line);
+        }
         writeSummary(best, inputEval, seconds);
     }
 
@@ -377,7 +477,7 @@ private:
         say("time: median " + fixed(metrics::median(evalMs_), 0) + " ms per evaluation (" + std::to_string(evalMs_.size()) +
             " measured; per view " + fixed(t.totalMs / n, 0) + " ms: render and read-back " + fixed(t.measurePassMs / n, 0) +
             ", truth " + fixed(t.groundTruthMs / n, 0) + ", soft truth " + fixed(t.softTruthMs / n, 0) + ")");
-        writeTextAtomic(opt_.outDir / "summary.json", s.dump(2) + "\n");
+        if (writes()) writeTextAtomic(opt_.outDir / "summary.json", s.dump(2) + "\n");
     }
 
     const TuneOptions& opt_;
@@ -392,7 +492,10 @@ private:
     Budget budget_;
     Objective objective_;
     SearchResult result_;
-    int made_ = 0, resumed_ = 0;
+    int made_ = 0, resumed_ = 0, fromShards_ = 0;
+    bool othersSilent_ = false;  // a shard wrote nothing in opt_.shardWaitSeconds
+    Settings planFrom_;           // the search's current round (plan())
+    std::vector<Settings> plan_;
     std::vector<double> evalMs_;  // wall-clock of each new evaluation
 };
 

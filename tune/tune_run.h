@@ -4,6 +4,7 @@
 // same command resumes, scores the result on held-out views, explains each change by ablation,
 // and writes tuned.json, front/, explain.json/.md and summary.json. Needs a current GL context.
 #include "metrics/cost_model.h"
+#include "tune/tune_journal.h"
 #include "tune/tune_search.h"
 
 #include <cstdint>
@@ -33,6 +34,10 @@ struct TuneOptions {
     long stopAfter = -1;  // make at most this many new evaluations, then stop as Ctrl-C would
     std::function<void(const std::string&)> progress;  // one line per evaluation and stage
     std::string machine;
+    // One of n processes on one shared folder (docs/tuning.md#shards): each measures its share of
+    // every round and waits for the others'. The first shard writes the outputs.
+    Shard shard;
+    double shardWaitSeconds = 600.0;  // then a silent shard's share is measured here
 };
 
 struct TuneOutcome {
@@ -41,6 +46,7 @@ struct TuneOutcome {
     std::string message;       // the summary line
     int evaluations = 0;       // made by this run (a resumed run's journal ones are free)
     int resumed = 0;           // read back from the journal
+    int fromShards = 0;        // measured by other shards and read from their journals
 };
 
 // Throws SettingsError for a bad preset or reference, std::runtime_error for a folder holding

@@ -131,17 +131,13 @@ private:
         std::vector<std::size_t> order(space_.dims.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         std::shuffle(order.begin(), order.end(), rng_);
+        if (opt_.plan) opt_.plan(at(cur).settings, neighbours(at(cur).settings, order));
         for (std::size_t di : order) {
             const Dimension& d = space_.dims[di];
             const Settings base = at(cur).settings;
-            if (!applies(base, d.path)) continue;
-            const long i = long(currentIndex(base, d));
-            for (long delta : {1L, -1L, 2L, -2L}) {
-                const long j = i + delta;
-                if (j < 0 || j >= long(d.values.size())) continue;
-                const std::optional<Settings> s = tryValue(base, d, std::size_t(j));
-                if (!s || *s == base || (!seen(*s) && !worthEvaluating(*s, cur))) continue;
-                const auto k = visit(*s, moveText(base, d, std::size_t(j)));
+            for (const auto& [j, s] : moves(base, d)) {
+                if (!seen(s) && !worthEvaluating(s, cur)) continue;
+                const auto k = visit(s, moveText(base, d, j));
                 if (!k) return std::nullopt;
                 if (better(at(*k), at(cur))) {
                     cur = *k;
@@ -150,6 +146,29 @@ private:
             }
         }
         return cur;
+    }
+
+    // The neighbours descend() tries from `base`, in its order, that are new and valid.
+    std::vector<Settings> neighbours(const Settings& base, const std::vector<std::size_t>& order) const {
+        std::vector<Settings> out;
+        for (std::size_t di : order)
+            for (auto& [j, s] : moves(base, space_.dims[di]))
+                if (!seen(s) && validate(s).empty()) out.push_back(std::move(s));
+        return out;
+    }
+
+    // A dimension's moves from `base`, nearest first: one step up, down, then two.
+    static std::vector<std::pair<std::size_t, Settings>> moves(const Settings& base, const Dimension& d) {
+        std::vector<std::pair<std::size_t, Settings>> out;
+        if (!applies(base, d.path)) return out;
+        const long i = long(currentIndex(base, d));
+        for (long delta : {1L, -1L, 2L, -2L}) {
+            const long j = i + delta;
+            if (j < 0 || j >= long(d.values.size())) continue;
+            if (std::optional<Settings> s = tryValue(base, d, std::size_t(j)); s && !(*s == base))
+                out.emplace_back(std::size_t(j), std::move(*s));
+        }
+        return out;
     }
 
     // At the budget's edge no single move helps: one cost dimension up and another down.

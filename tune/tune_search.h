@@ -65,6 +65,10 @@ struct SearchOptions {
     std::uint64_t seed = 1;
     std::function<bool()> stopRequested;  // checked before each evaluation (Ctrl-C)
     std::function<void(const SearchProgress&)> progress;
+    // Called at the start of each descent round with the neighbours the round tries, in order, as
+    // long as the point stays `from`: a sharded tune measures its share of them ahead, so the
+    // shards work in parallel on one round (docs/tuning.md#shards). The search itself is unchanged.
+    std::function<void(const Settings& from, const std::vector<Settings>& neighbours)> plan;
 };
 
 inline constexpr int kScreensPerEvaluation = 6;

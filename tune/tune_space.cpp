@@ -72,6 +72,8 @@ Space defaultSpace(const Settings& base) {
     add("filter.size", list({3, 5, 7, 9}));
     add("filter.blurRadius", list({0, 1, 2, 3, 4}));
     add("filter.pcssMaxRadius", list({2.0, 4.0, 8.0, 12.0, 16.0}));
+    add("filter.contact", enumValues("filter.contact"));
+    add("filter.contactLength", list({0.1, 0.25, 0.5, 1.0, 2.0}));
     add("bias.constant", list({0.0, 0.0025, 0.005, 0.01, 0.015, 0.02, 0.03, 0.05, 0.08}));
     add("bias.slope", list({0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0}));
     add("bias.normalOffset", list({0.0, 0.25, 0.5, 0.75, 1.0, 1.5}));

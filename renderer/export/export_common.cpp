@@ -111,6 +111,10 @@ void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades) {
     if (s.filter.screenSpace != ScreenSpace::Off)
         e.add("(screen-space shadow blur)", true, M::NoEquivalent,
               "filter.screenSpace: the shadow mask blurred in screen space (seed 001); no shadow setting does it");
+    if (s.filter.contact != ContactShadows::Off)
+        e.add("(contact shadows)", s.filter.contactLength, M::NoEquivalent,
+              "filter.contact: a screen-space march of filter.contactLength m toward the sun; set the engine's own "
+              "contact shadows by hand (Filament's screenSpaceContactShadows, Unreal's contact shadow length)");
     if (s.filter.padding)
         e.add("(PCF padding)", true, M::NoEquivalent, "filter.padding grows each light box by the kernel's reach (seed 004)");
     addCascadeBias(e, s);

@@ -37,7 +37,7 @@ void MeasurePass::drawScene(const Renderer& r) const {
 
 // The main pass's state, so coverage is the same.
 void MeasurePass::draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) {
-    const bool screen = s.filter.screenSpace == ScreenSpace::Blur;
+    const bool screen = screenShadowOn(s.filter);
     if (screen) {
         if (!screen_) screen_ = std::make_unique<ScreenShadow>();
         r.bindShadingInputs();

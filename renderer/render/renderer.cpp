@@ -98,7 +98,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.filterMapBytes = moments_.bytes();
     }
     // The side camera's image filters the maps itself: the mask is the main camera's screen.
-    const bool screen = s.filter.screenSpace == ScreenSpace::Blur && s.output.view != View::Side;
+    const bool screen = screenShadowOn(s.filter) && s.output.view != View::Side;
     if (screen) {
         timers_.begin(screenTimer);
         buildScreenShadow(s, plan_.csProj * plan_.vsView, target_.width(), target_.height());
@@ -273,7 +273,7 @@ void Renderer::renderMainView(const Settings& s, OffscreenTarget& out) {
     timers_.beginFrame(s.cascades.count + 1);
     counters_.beginFrame(CounterSlots{s.cascades.count}.total());  // counted, never read
     ownWork_.assign(std::size_t(CounterSlots{s.cascades.count}.total()), PassWork{});
-    const bool screen = s.filter.screenSpace == ScreenSpace::Blur;
+    const bool screen = screenShadowOn(s.filter);
     if (screen) buildScreenShadow(s, plan_.csProj * plan_.vsView, out.width(), out.height());
     mainPass(s, plan_.csProj * plan_.vsView, out, screen);
 }

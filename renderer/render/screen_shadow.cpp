@@ -1,7 +1,10 @@
 #include "renderer/render/screen_shadow.h"
 
+#include "renderer/csm/light_fit.h"
 #include "renderer/gpu/pass_state.h"
 #include "renderer/render/shader_library.h"
+
+#include <glm/matrix.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -34,6 +37,7 @@ ScreenShadow::ScreenShadow() {
     downProgram_ = linkShaderFiles("fullscreen.vert", "screen_down.frag", "screen_down");
     blurProgram_ = linkShaderFiles("fullscreen.vert", "screen_blur.frag", "screen_blur");
     upProgram_ = linkShaderFiles("fullscreen.vert", "screen_up.frag", "screen_up");
+    contactProgram_ = linkShaderFiles("fullscreen.vert", "screen_contact.frag", "screen_contact");
     emptyVao_ = gpu::createVertexArray();
     maskFbo_ = gpu::createFramebuffer();
     passFbo_ = gpu::createFramebuffer();
@@ -54,6 +58,7 @@ void ScreenShadow::ensure(int width, int height, int n) {
         mask_ = makeTarget(GL_RG32F, width, height, "screen shadow mask");
         depth_ = makeTarget(GL_DEPTH_COMPONENT32F, width, height, "screen shadow mask depth");
         result_ = makeTarget(GL_R32F, width, height, "screen shadow upsampled");
+        contact_ = makeTarget(GL_R32F, width, height, "screen shadow with contact shadows");
         glNamedFramebufferTexture(maskFbo_.id(), GL_COLOR_ATTACHMENT0, mask_.id(), 0);
         glNamedFramebufferTexture(maskFbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
         glNamedFramebufferDrawBuffer(maskFbo_.id(), GL_COLOR_ATTACHMENT0);
@@ -102,16 +107,32 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
     }
     timers_.end(0);
     timers_.begin(1);
+    blurred_ = f.screenSpace != ScreenSpace::Off;
+    marched_ = f.contact != ContactShadows::Off;
+    glBindSampler(ST_BINDING_SCREEN_SOURCE, 0);
+    glBindSampler(ST_BINDING_SCREEN_FULL, 0);
+    block_.bind(ST_BLOCK_SCREEN);
+    if (blurred_) blur(f);
+    factor_ = blurred_ ? result_.id() : mask_.id();
+    if (marched_) {
+        march(s, viewProj, factor_);
+        factor_ = contact_.id();
+    }
+    timers_.end(1);
+    glNamedFramebufferTexture(passFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+    glBindTextureUnit(ST_BINDING_SCREEN_SOURCE, 0);
+    glBindTextureUnit(ST_BINDING_SCREEN_FULL, 0);
+    glBindTextureUnit(ST_BINDING_SCREEN_DEPTH, 0);
+}
+
+void ScreenShadow::blur(const FilterSettings& f) {
     gpu_if::ScreenBlock b;
     const auto w = screenBlurWeights(f.screenBlurRadius);
     for (std::size_t k = 0; k < w.size(); ++k) b.screenWeights[k / 4][int(k % 4)] = w[k];
     b.screenRadius = f.screenBlurRadius;
     b.screenDownsample = n_;
     b.screenDepthSigma = f.screenDepthSigma;
-    block_.bind(ST_BLOCK_SCREEN);
     const int lw = screenLowSize(width_, n_), lh = screenLowSize(height_, n_);
-    glBindSampler(ST_BINDING_SCREEN_SOURCE, 0);
-    glBindSampler(ST_BINDING_SCREEN_FULL, 0);
     block_.upload(b);
     fullscreen(low_[0].id(), lw, lh, mask_.id(), downProgram_);
     b.screenAxis = 0;
@@ -122,28 +143,58 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
     fullscreen(low_[0].id(), lw, lh, low_[1].id(), blurProgram_);
     glBindTextureUnit(ST_BINDING_SCREEN_FULL, mask_.id());
     fullscreen(result_.id(), width_, height_, low_[0].id(), upProgram_);
-    timers_.end(1);
-    glNamedFramebufferTexture(passFbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
-    glBindTextureUnit(ST_BINDING_SCREEN_SOURCE, 0);
-    glBindTextureUnit(ST_BINDING_SCREEN_FULL, 0);
+}
+
+void ScreenShadow::march(const Settings& s, const glm::mat4& viewProj, GLuint mapFactor) {
+    gpu::DebugGroup group("contact shadows");
+    gpu_if::ScreenBlock b;
+    b.contactViewProj = viewProj;
+    b.contactClipToWs = glm::inverse(viewProj);
+    b.contactToSun = glm::vec4(-csm::lightDirection(s.light.azimuth, s.light.elevation), 0.0f);
+    b.contactLength = s.filter.contactLength;
+    b.contactSteps = s.filter.contactSteps;
+    b.contactThickness = s.filter.contactThickness;
+    block_.upload(b);
+    glBindTextureUnit(ST_BINDING_SCREEN_FULL, mask_.id());
+    glBindTextureUnit(ST_BINDING_SCREEN_DEPTH, depth_.id());
+    glBindSampler(ST_BINDING_SCREEN_DEPTH, 0);
+    fullscreen(contact_.id(), width_, height_, mapFactor, contactProgram_);
+}
+
+std::size_t ScreenShadow::bytes() const {
+    if (width_ <= 0) return 0;
+    const std::size_t full = std::size_t(width_) * std::size_t(height_);
+    std::size_t b = full * (8u + 4u);  // the mask and its depth
+    if (blurred_) b = screenShadowBytes(width_, height_, n_);
+    if (marched_) b += full * 4u;
+    return b;
 }
 
 PassWork ScreenShadow::blurWork(const FilterSettings& f) const {
     const std::uint64_t full = std::uint64_t(width_) * std::uint64_t(height_);
-    const std::uint64_t low = std::uint64_t(screenLowSize(width_, n_)) * std::uint64_t(screenLowSize(height_, n_));
-    const std::uint64_t n2 = std::uint64_t(n_) * std::uint64_t(n_);
-    const std::uint64_t blurTaps = 2u * std::uint64_t(f.screenBlurRadius) + 2u;  // centre and 2r + 1
     constexpr std::uint64_t kRg32f = 8, kR32f = 4;
     PassWork w;
-    w.draws = 4;
-    w.filterTaps = low * 2u * n2 + 2u * low * blurTaps + full * 5u;
-    w.bytesRead = w.filterTaps * kRg32f;  // every source is RG32F
-    w.bytesWritten = 3u * low * kRg32f + full * kR32f;
+    if (f.screenSpace != ScreenSpace::Off) {
+        const std::uint64_t low = std::uint64_t(screenLowSize(width_, n_)) * std::uint64_t(screenLowSize(height_, n_));
+        const std::uint64_t n2 = std::uint64_t(n_) * std::uint64_t(n_);
+        const std::uint64_t blurTaps = 2u * std::uint64_t(f.screenBlurRadius) + 2u;  // centre and 2r + 1
+        w.draws = 4;
+        w.filterTaps = low * 2u * n2 + 2u * low * blurTaps + full * 5u;
+        w.bytesRead = w.filterTaps * kRg32f;  // every source is RG32F
+        w.bytesWritten = 3u * low * kRg32f + full * kR32f;
+    }
+    if (f.contact != ContactShadows::Off) {
+        const std::uint64_t taps = full * (3u + std::uint64_t(f.contactSteps));
+        w.draws += 1;
+        w.filterTaps += taps;
+        w.bytesRead += taps * kRg32f;
+        w.bytesWritten += full * kR32f;
+    }
     return w;
 }
 
 void ScreenShadow::bindForSampling() const {
-    glBindTextureUnit(ST_BINDING_SCREEN_SHADOW, result_.id());
+    glBindTextureUnit(ST_BINDING_SCREEN_SHADOW, factor_);
     glBindSampler(ST_BINDING_SCREEN_SHADOW, 0);
 }
 

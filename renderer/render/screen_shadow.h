@@ -23,6 +23,13 @@ namespace st {
 
 inline constexpr int kMaxScreenBlurRadius = 16;  // filter.screenBlurRadius's maximum
 
+// The main and measurement passes read their factor from this path: for the blur, for contact
+// shadows (filter.contact), or both. Contact shadows march through the mask pass's depth, then take
+// min() with the map's factor (the blurred one, or the mask's own with no blur).
+inline bool screenShadowOn(const FilterSettings& f) {
+    return f.screenSpace != ScreenSpace::Off || f.contact != ContactShadows::Off;
+}
+
 // One-sided weights of taps 0..radius of the 1-D Gaussian, sigma = (radius + 1) / 2 pixels (the
 // rule of the moment blur and the Gaussian PCF, renderer/csm/filter_weights.h), normalised so the
 // taps -radius..radius sum to 1; the rest 0. Radius 0 is the single weight 1.
@@ -41,24 +48,27 @@ public:
 
     // The mask of s.filter seen through viewProj at width x height, drawn by drawScene (which
     // binds geometry and issues the draws; the caller has bound the frame and cascade blocks and
-    // the maps, as for the main pass), then downsampled, blurred and upsampled. Leaves
-    // ST_BLOCK_VIEW bound to its own buffer: the caller uploads and binds its view block after.
+    // the maps, as for the main pass), then downsampled, blurred and upsampled (filter.screenSpace),
+    // then contact shadows marched (filter.contact). Leaves ST_BLOCK_VIEW bound to its own buffer:
+    // the caller uploads and binds its view block after.
     void build(const Settings& s, const glm::mat4& viewProj, int width, int height,
                const std::function<void()>& drawScene);
     // The renderer's own counts of the last build()'s downsample, blurs and upsample for f: four
     // fullscreen draws; texel fetches at the shaders' full loop lengths (the downsample reads its
     // N x N block twice, each blur its centre and 2r + 1 taps, the upsample the full-size texel
     // and four downsampled ones); the three downsampled targets and the R32F result written.
+    // With contact shadows, one more fullscreen draw: per pixel the map factor, the mask and the
+    // depth, and two mask reads per step (at most: the march stops at its first hit); one R32F write.
     PassWork blurWork(const FilterSettings& f) const;
     void bindForSampling() const;  // the upsampled factor at ST_BINDING_SCREEN_SHADOW
     void unbind() const;
     GLuint maskTexture() const { return mask_.id(); }      // RG32F: factor, view depth (0: none)
     GLuint lowTexture() const { return low_[0].id(); }     // RG32F, 1/N size: blurred factor, depth
-    GLuint resultTexture() const { return result_.id(); }  // R32F: the factor the image shows
+    GLuint resultTexture() const { return factor_; }       // the factor the image shows (.r)
     int width() const { return width_; }
     int height() const { return height_; }
     int downsample() const { return n_; }
-    std::size_t bytes() const { return width_ > 0 ? screenShadowBytes(width_, height_, n_) : 0; }
+    std::size_t bytes() const;
     // GPU time of the last build(): the mask pass (a scene draw that filters the maps), and the
     // downsample, both blurs and the upsample. Waits for the results.
     double maskMs() const { return timers_.milliseconds(0); }
@@ -66,11 +76,14 @@ public:
 
 private:
     void ensure(int width, int height, int n);
+    void blur(const FilterSettings& f);
+    void march(const Settings& s, const glm::mat4& viewProj, GLuint mapFactor);
     void fullscreen(GLuint target, int width, int height, GLuint source, const gpu::Program& program);
     gpu::Program maskProgram_;
     gpu::Program downProgram_;
     gpu::Program blurProgram_;
     gpu::Program upProgram_;
+    gpu::Program contactProgram_;
     gpu::VertexArray emptyVao_;
     gpu::Framebuffer maskFbo_;
     gpu::Framebuffer passFbo_;
@@ -78,6 +91,9 @@ private:
     gpu::Texture depth_;
     gpu::Texture low_[2];
     gpu::Texture result_;
+    gpu::Texture contact_;  // R32F: min(map factor, contact factor)
+    GLuint factor_ = 0;     // what the passes read: contact_, result_ or the mask
+    bool blurred_ = false, marched_ = false;  // what the last build() ran
     gpu::UniformBuffer<gpu_if::ScreenBlock> block_;
     gpu::UniformBuffer<gpu_if::ViewBlock> view_;
     GpuTimers timers_;

@@ -76,6 +76,11 @@ std::vector<KindDescriptor> screenKinds() {
             {ST_SCREEN_BLUR, "", {"filter.screenDownsample", "filter.screenBlurRadius", "filter.screenDepthSigma"}, {}}};
 }
 
+std::vector<KindDescriptor> contactKinds() {
+    return {{ST_CONTACT_OFF, "", {}, {}},
+            {ST_CONTACT_MARCH, "", {"filter.contactLength", "filter.contactSteps", "filter.contactThickness"}, {}}};
+}
+
 std::vector<KindDescriptor> viewKinds() {
     std::vector<KindDescriptor> kinds;
     for (int v = 0; v < ST_VIEW_COUNT; ++v) kinds.push_back({v, "", {}, {}});
@@ -99,6 +104,7 @@ std::vector<ModeDescriptor> buildModes() {
     return {
         mode<FilterKind>("filter.kind", filterKinds()),
         mode<ScreenSpace>("filter.screenSpace", screenKinds()),
+        mode<ContactShadows>("filter.contact", contactKinds()),
         mode<SplitScheme>("cascades.scheme", schemeKinds()),
         mode<ZExtension>("cascades.zExtension", zExtensionKinds()),
         mode<CascadeStorage>("cascades.storage", storageKinds()),
@@ -168,7 +174,7 @@ constexpr std::string_view kIndependent[] = {
     "bias.normalOffset", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
     "output.height", "path.frames", "path.keyframes", "measure.sunRays", "measure.artifactTexels",
     // The mode fields themselves: each one always applies.
-    "filter.kind", "filter.screenSpace", "cascades.scheme", "cascades.zExtension", "cascades.storage",
+    "filter.kind", "filter.screenSpace", "filter.contact", "cascades.scheme", "cascades.zExtension", "cascades.storage",
     "cascades.selection", "output.view"};
 
 // Not shadow settings: what is shadowed, seen, shown or measured, or free text; caster culling,

@@ -108,6 +108,15 @@ struct EnumNames<ScreenSpace> {
     static constexpr std::array<std::string_view, ST_SCREEN_COUNT> names{"off", "blur"};
 };
 
+// Off: the map's factor alone. March: contact shadows, a short ray march toward the sun through
+// the camera's depth buffer near each receiver, its factor combined with the map's by min() (Godot
+// PR #118045): contacts a large bias or a coarse map detaches get their shadow back.
+enum class ContactShadows { Off = ST_CONTACT_OFF, March = ST_CONTACT_MARCH };
+template <>
+struct EnumNames<ContactShadows> {
+    static constexpr std::array<std::string_view, ST_CONTACT_COUNT> names{"off", "march"};
+};
+
 // Where the cascades' depth maps live (renderer/csm/storage_layout.h). Array: one layer per
 // cascade of a D32F array, one size for all. Atlas: one texture, a viewport per tile (seed 003).
 // Textures: one texture per cascade (seed 002). Atlas and textures allow a size per cascade.
@@ -145,6 +154,7 @@ static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Inter
 static_assert(int(FilterKind::Pcss) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
 static_assert(int(FilterWeights::Gaussian) == ST_WEIGHTS_COUNT - 1 && int(FilterWeights::Box) == 0);
 static_assert(int(ScreenSpace::Blur) == ST_SCREEN_COUNT - 1 && int(ScreenSpace::Off) == 0);
+static_assert(int(ContactShadows::March) == ST_CONTACT_COUNT - 1 && int(ContactShadows::Off) == 0);
 static_assert(int(CascadeStorage::Textures) == ST_STORAGE_COUNT - 1 && int(CascadeStorage::Array) == 0);
 static_assert(int(View::TexelGrid) == ST_VIEW_COUNT - 1 && int(View::Shaded) == 0);
 
@@ -225,6 +235,11 @@ struct FilterSettings {
     int screenDownsample = 2;     // the mask is blurred at 1/N of the output size: 1, 2 (seed 001) or 4
     int screenBlurRadius = 4;     // downsampled pixels each side of the separable Gaussian, 0 = none
     float screenDepthSigma = 0.1f;// depth-aware weight: sigma as a fraction of the view depth; 0 = off
+    // Contact shadows (drawn on the screen-space path's mask and depth):
+    ContactShadows contact = ContactShadows::Off;
+    float contactLength = 0.5f;      // metres marched toward the sun from each receiver
+    int contactSteps = 12;           // depth samples along the march
+    float contactThickness = 0.3f;   // metres behind the depth buffer that still occlude
     bool operator==(const FilterSettings&) const = default;
 };
 

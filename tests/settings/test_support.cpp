@@ -27,7 +27,8 @@ Settings everyFieldChanged() {
                 .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f,
                 .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
                 .pcssMaxRadius = 12.0f, .screenSpace = ScreenSpace::Blur, .screenDownsample = 4,
-                .screenBlurRadius = 6, .screenDepthSigma = 0.25f};
+                .screenBlurRadius = 6, .screenDepthSigma = 0.25f, .contact = ContactShadows::March, .contactLength = 1.25f,
+                .contactSteps = 20, .contactThickness = 0.75f};
     s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f, .receiverPlane = true,
               .constantScale = {1.0f, 1.5f, 2.25f}, .slopeScale = {0.5f, 1.0f, 1.0f}, .normalOffsetScale = {1.0f, 1.0f, 3.0f}};
     s.output = {.width = 800, .height = 600, .view = View::Cascades, .texelBlock = 16, .sideTexels = true};

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `shadowtune tune` from the command line: a budget nothing meets is refused naming the cheapest
 # cost; Ctrl-C keeps the evaluations made and the same command resumes to the same tuned.json as an
-# uninterrupted run (the same seed gives the same result); a folder of another tune is refused; the
+# uninterrupted run (the same seed gives the same result); shards on one folder reach the same result
+# as one process, each measuring a share; a folder of another tune is refused; the
 # tuned preset loads, and `measure` of it gives the figures the tune reported.
 #   tune_cli_test.sh SHADOWTUNE SOURCE_DIR WORK_DIR
 set -uo pipefail
@@ -34,6 +35,35 @@ check "it prints progress with the best so far" "grep -q 'tune \[[0-9]*/24\] bes
 check "it explains each change" "grep -q 'alone' '$work/whole/explain.md' && jq -e '.changes | length > 0' '$work/whole/explain.json' >/dev/null"
 check "it scores the held-out view" "jq -e '.tuned.heldOut.error != null and (.heldOutHolds | type == \"boolean\")' '$work/whole/summary.json' >/dev/null"
 check "the front is charted" "[[ -s '$work/whole/front/pareto.png' && -s '$work/whole/front/results.csv' ]]"
+
+# Two shards on one folder, run at once: each measures a share, no point is measured twice, and
+# the first writes the unsharded run's tuned.json and explanation (the same seed, the same search).
+# A later unsharded run over the folder (the merge) makes no new evaluation and writes the same.
+run --out "$work/shards" --shard 1/2 >"$work/shard1.log" 2>&1 &
+s1=$!
+run --out "$work/shards" --shard 2/2 >"$work/shard2.log" 2>&1
+c2=$?
+wait "$s1"
+c1=$?
+check "both shards exit 0 ($c1, $c2)" "[[ $c1 -eq 0 && $c2 -eq 0 ]]"
+n1=$(wc -l <"$work/shards/evaluations.shard-1-of-2.jsonl")
+n2=$(wc -l <"$work/shards/evaluations.shard-2-of-2.jsonl")
+uniq=$(cat "$work/shards"/evaluations.shard-*.jsonl | jq -r '.views + " " + .id' | sort -u | wc -l)
+check "each shard measures a share ($n1 + $n2)" "[[ $n1 -gt 0 && $n2 -gt 0 ]]"
+check "no point is measured twice ($uniq distinct)" "[[ $uniq -eq $((n1 + n2)) ]]"
+check "shard 2 leaves the outputs to shard 1" "grep -q 'shard 1 writes the results' '$work/shard2.log'"
+check "the shards reach the unsharded tuned.json" "cmp -s '$work/whole/tuned.json' '$work/shards/tuned.json'"
+check "and its explanation" "cmp -s '$work/whole/explain.json' '$work/shards/explain.json'"
+rm "$work/shards/tuned.json"
+run --out "$work/shards" >"$work/merge.log" 2>&1
+check "the merge resumes from both shards' journals" "[[ $? -eq 0 ]] && grep -q 'resuming: $((n1 + n2)) evaluations' '$work/merge.log'"
+check "and measures nothing new" "[[ ! -s '$work/shards/evaluations.jsonl' ]]"
+check "and writes the same tuned.json" "cmp -s '$work/whole/tuned.json' '$work/shards/tuned.json'"
+# A shard whose peers never run: after --shard-wait it measures their share itself.
+run --out "$work/alone" --shard 1/2 --shard-wait 1 >"$work/alone.log" 2>&1
+check "a shard left alone finishes the tune" "[[ $? -eq 0 ]] && grep -q 'wrote nothing in 1 s' '$work/alone.log' && cmp -s '$work/whole/tuned.json' '$work/alone/tuned.json'"
+"$st" tune "$work/base.json" --budget-ms 5 --shard 3/2 --out "$work/bad" >"$work/badshard.log" 2>&1
+check "a shard past the count exits 2" "[[ $? -eq 2 ]] && grep -q 'expected k/n with 1 <= k <= n' '$work/badshard.log'"
 
 # Stopped after 9 new evaluations (as Ctrl-C stops): the evaluations are kept, and the same command
 # resumes to the uninterrupted run's result.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -143,6 +144,40 @@ TEST(TuneSearchTest, StopsWhenAskedAndSaysSo) {
     const SearchResult r = search({Settings{}}, smallSpace(), [&](const Settings& s) { ++calls; return bowl(s); }, opt);
     EXPECT_TRUE(r.stopped);
     EXPECT_EQ(r.evaluations, 5);
+}
+
+// A sharded tune measures a round's neighbours ahead from the plan: the round must try the plan's
+// points in its order until one is better than where it stands (then it moves on from there).
+TEST(TuneSearchTest, ARoundTriesItsPlanInOrderUntilItMoves) {
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 60;
+    std::vector<std::vector<std::string>> plans;
+    std::vector<std::string> tried;
+    std::vector<double> errors;
+    opt.plan = [&](const Settings&, const std::vector<Settings>& next) {
+        plans.emplace_back();
+        for (const Settings& s : next) plans.back().push_back(toOrderedJson(s).dump());
+    };
+    const Evaluator record = [&](const Settings& s) {
+        tried.push_back(toOrderedJson(s).dump());
+        errors.push_back(bowl(s).error);
+        return bowl(s);
+    };
+    search({Settings{}}, space, record, opt);
+    ASSERT_FALSE(plans.empty());
+    const std::vector<std::string>& first = plans.front();
+    ASSERT_FALSE(first.empty());
+    // tried[0] is the start; the first round follows its plan from tried[1].
+    std::size_t n = 0;
+    while (n < first.size() && 1 + n < tried.size() && tried[1 + n] == first[n]) {
+        ++n;
+        if (errors[n] < errors[0]) break;  // the round moves on from the first better neighbour
+    }
+    ASSERT_GE(n, 1u);
+    EXPECT_TRUE(n == first.size() || errors[n] < errors[0])
+        << "the round left its plan at neighbour " << n << " of " << first.size() << " without moving";
 }
 
 TEST(TuneSearchTest, RefusedSettingsAreNotEvaluated) {
