@@ -89,6 +89,12 @@ FigureTable makeTable() {
          "Mean share of sample points whose hard shadow result flips between consecutive frames of the camera "
          "path; absent without a path.",
          kEverywhere | ErrorChoice},
+        {"flicker.alternatingPixels", "alternating pixels", FigureUnit::Count, Better::Lower,
+         [](const M& m) { return m.flicker ? Figure(double(m.flicker->alternatingPixels)) : std::nullopt; }, "",
+         "alternating pixels (saccade's flicker count)",
+         "Sun-facing pixels whose luminance (intensity x N.L x filtered factor) changes by >= 0.02 up then down, or "
+         "down then up, over 3 consecutive frames of the path (the saccade tool's flicker unit); absent without a path.",
+         kEverywhere},
 
         {"soft.filteredError", "filtered error vs the sun's disc", FigureUnit::Error, Better::Lower,
          [=](const M& m) -> Figure { return soft(m).filteredError(); }, "soft-filtered",

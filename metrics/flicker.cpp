@@ -14,14 +14,28 @@ double FlickerMeter::Moments::stdDev(int n) const {
     return std::sqrt(std::max(sumSquares / n - mean * mean, 0.0));
 }
 
-FlickerMeter::FlickerMeter(const MeasureSamples& first, std::vector<std::uint8_t> truth)
+FlickerMeter::FlickerMeter(const MeasureSamples& first, std::vector<std::uint8_t> truth, float directLight)
     : points_(first.size(), 0), hard_(first.size()), filtered_(first.size()), flipped_(first.size(), 0),
-      truth_(std::move(truth)) {
+      truth_(std::move(truth)), lightOf_(first.size(), 0.0f), luminance_(first.size(), 0.0),
+      lastStep_(first.size(), 0), alternated_(first.size(), 0) {
     if (!truth_.empty() && truth_.size() != first.size()) throw std::invalid_argument("flicker: truth differs in size");
     for (std::size_t i = 0; i < first.size(); ++i) {
         points_[i] = first.receiver(i);
         pointCount_ += points_[i];
+        if (points_[i]) lightOf_[i] = directLight * first.normal[i].w;
     }
+}
+
+void FlickerMeter::addLuminance(std::size_t i, float filtered) {
+    const double luminance = double(lightOf_[i]) * double(filtered);
+    if (frames_ > 0) {
+        const double change = luminance - luminance_[i];
+        const std::int8_t step = std::abs(change) < kAlternationStep ? 0 : (change > 0.0 ? 1 : -1);
+        // Two steps in a row of opposite sign: up and down again (or down and up) over 3 frames.
+        if (step != 0 && lastStep_[i] == -step) alternated_[i] = 1;
+        lastStep_[i] = step;
+    }
+    luminance_[i] = luminance;
 }
 
 void FlickerMeter::add(const std::vector<glm::vec4>& shadow) {
@@ -32,6 +46,7 @@ void FlickerMeter::add(const std::vector<glm::vec4>& shadow) {
         const float hard = shadow[i].x;
         hard_[i].add(hard);
         filtered_[i].add(shadow[i].y);
+        addLuminance(i, shadow[i].y);
         if (!truth_.empty()) wrong += (hard >= 0.5f) != (truth_[i] != 0);
         if (frames_ > 0 && hard != previous_[i]) {
             ++flips;
@@ -62,6 +77,7 @@ FlickerReport FlickerMeter::report() const {
     r.samplePoints = pointCount_;
     r.flipShareByFrame = flipShares_;
     r.misclassifiedByFrame = misclassified_;
+    r.alternatingPixels = std::size_t(std::count(alternated_.begin(), alternated_.end(), std::uint8_t(1)));
     if (!flipShares_.empty()) {
         r.flipRate = std::accumulate(flipShares_.begin(), flipShares_.end(), 0.0) / double(flipShares_.size());
         r.maxFlipShare = *std::max_element(flipShares_.begin(), flipShares_.end());

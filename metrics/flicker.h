@@ -23,6 +23,11 @@ struct FlickerReport {
     double meanHardStdDev = 0.0;    // per-point temporal standard deviation of the hard result, mean
     double maxHardStdDev = 0.0;
     double meanFilteredStdDev = 0.0;  // the same for the filtered factor
+    // The saccade tool's unit: points whose signed luminance change alternates sign with magnitude
+    // >= kAlternationStep over >= 3 consecutive frames (up then down, or down then up, by a step
+    // each). Luminance: the direct term a white surface shows, intensity x N.L x filtered factor
+    // (the ambient term and the surface colour do not change along the path).
+    std::size_t alternatingPixels = 0;
     // Per frame pair k-1 -> k (k = 1 .. frames-1, so frames-1 entries): the share of points whose
     // hard result flips; their mean is flipRate.
     std::vector<double> flipShareByFrame;
@@ -31,12 +36,17 @@ struct FlickerReport {
     std::vector<double> misclassifiedByFrame;
 };
 
+// Smallest luminance change (of 1 = full direct light) that counts as a step of alternation.
+inline constexpr double kAlternationStep = 0.02;
+
 class FlickerMeter {
 public:
     // The sample points: the receivers of `first` (pixels with a surface facing the sun).
     // `truth` (1 lit, 0 shadowed per pixel, or empty) is the still truth of the observer's pixels,
     // the same for every frame; with it each frame's misclassified share is kept.
-    explicit FlickerMeter(const MeasureSamples& first, std::vector<std::uint8_t> truth = {});
+    // `directLight` (light.intensity) scales each point's N.L into the luminance the alternation
+    // count reads.
+    explicit FlickerMeter(const MeasureSamples& first, std::vector<std::uint8_t> truth = {}, float directLight = 1.0f);
 
     // Every frame's MeasureSamples::shadow in path order, the first frame's included.
     void add(const std::vector<glm::vec4>& shadow);
@@ -55,6 +65,7 @@ private:
     };
 
     double shareOfPoints(std::size_t count) const;
+    void addLuminance(std::size_t i, float filtered);  // the alternation count's step for point i
 
     std::vector<std::uint8_t> points_;
     std::size_t pointCount_ = 0;
@@ -65,6 +76,10 @@ private:
     std::vector<double> flipShares_;  // per consecutive pair
     std::vector<std::uint8_t> truth_;
     std::vector<double> misclassified_;  // per frame, with a truth
+    std::vector<float> lightOf_;          // per point: intensity x N.L, luminance per unit of factor
+    std::vector<double> luminance_;       // of the last frame
+    std::vector<std::int8_t> lastStep_;   // sign of the last change if it was a step, else 0
+    std::vector<std::uint8_t> alternated_;
     int frames_ = 0;
 };
 

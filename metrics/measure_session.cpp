@@ -54,7 +54,7 @@ FlickerReport measureFlicker(Renderer& r, MeasurePass& pass, const Settings& s, 
                              const std::vector<std::uint8_t>& truth) {
     if (s.path.frames <= 0) return {};
     const MeasureSamples first = sampleFrame(r, pass, atPathFrame(s, 0), s);  // fixes the sample points
-    FlickerMeter meter(first, truth);
+    FlickerMeter meter(first, truth, s.light.intensity);
     meter.add(first.shadow);
     for (int frame = 1; frame < s.path.frames; ++frame) {
         const Settings cascadeSettings = atPathFrame(s, frame);

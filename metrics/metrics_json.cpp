@@ -88,7 +88,8 @@ OJson flickerJson(const FlickerReport& f) {
                  {"flickeringShare", f.flickeringShare},
                  {"meanHardStdDev", f.meanHardStdDev},
                  {"maxHardStdDev", f.maxHardStdDev},
-                 {"meanFilteredStdDev", f.meanFilteredStdDev}};
+                 {"meanFilteredStdDev", f.meanFilteredStdDev},
+                 {"alternatingPixels", f.alternatingPixels}};
 }
 
 OJson costJson(const CostReport& c) {

@@ -62,6 +62,9 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.zExtensionDistance = cs.zExtensionDistance;
     fp.padTexels = s.filter.padding ? filterPaddingTexels(s.filter) : 0;
     fp.wsSceneBounds = wsSceneBounds;
+    fp.minFovY = glm::radians(cs.fitFovY);
+    fp.wsOrigin = s.origin;
+    fp.cameraRelative = cs.cameraRelative;
     plan.storage = planStorage(cs);
     for (int i = 0; i < cs.count; ++i) {
         const auto k = static_cast<std::size_t>(i);

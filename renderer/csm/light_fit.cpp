@@ -8,6 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -125,15 +127,49 @@ SliceBox padBox(SliceBox box, int pad, int mapSize) {
 // Seed 001 texel snapping: min x,y moved down to whole texels, max = min + size, so the box only
 // ever moves by whole texels and a static caster rasterises to the same texels every frame.
 // Moving min down can uncover up to one texel at the max side, so the texel is size / (m - 1):
-// the m-texel box then still covers the unsnapped one.
-Aabb snapToTexels(Aabb box, glm::vec2 size, int mapSize) {
+// the m-texel box then still covers the unsnapped one. In world light space the snap is float
+// math on the box's own coordinates (large far from the origin, so the multiple is rounded to
+// their float spacing). `phase` (camera-relative) is where this light space's origin lies in the
+// world's, in double, so the grid is the world's multiples of the texel with the box near zero.
+Aabb snapToTexels(Aabb box, glm::vec2 size, int mapSize, const std::optional<glm::dvec2>& phase) {
     for (int axis = 0; axis < 2; ++axis) {
         const float texel = size[axis] / static_cast<float>(mapSize - 1);
         if (!(texel > 0.0f)) continue;
-        box.min[axis] = std::floor(box.min[axis] / texel) * texel;
+        if (phase) {
+            const double t = texel;
+            const double world = (*phase)[axis] + static_cast<double>(box.min[axis]);
+            box.min[axis] = static_cast<float>(std::floor(world / t) * t - (*phase)[axis]);
+        } else {
+            box.min[axis] = std::floor(box.min[axis] / texel) * texel;
+        }
         box.max[axis] = box.min[axis] + texel * static_cast<float>(mapSize);
     }
     return box;
+}
+
+// The frame the box is fitted in: the camera in it, scene -> ls, and the grid's phase.
+struct LightFrame {
+    CameraParams camera;
+    glm::mat4 lsView{1.0f};
+    std::optional<glm::dvec2> phase;  // camera-relative: the eye's world ls x,y
+};
+
+LightFrame lightFrame(const CameraParams& cam, const glm::mat4& rotation, const FitParams& p) {
+    LightFrame f{cam, rotation, std::nullopt};
+    if (p.cameraRelative) {
+        // ls = R (x - eye): every number the fit and the snap see is metres around the camera.
+        f.camera.wsPosition = glm::vec3(0.0f);
+        f.camera.wsTarget = cam.wsTarget - cam.wsPosition;
+        f.lsView = rotation * glm::translate(glm::mat4(1.0f), -cam.wsPosition);
+        const glm::dvec3 wsEye = glm::dvec3(p.wsOrigin) + glm::dvec3(cam.wsPosition);
+        f.phase = glm::dvec2(glm::dmat3(glm::mat3(rotation)) * wsEye);
+    } else if (p.wsOrigin != glm::vec3(0.0f)) {
+        // World light space in float, as an engine without camera-relative math builds it.
+        f.camera.wsPosition = cam.wsPosition + p.wsOrigin;
+        f.camera.wsTarget = cam.wsTarget + p.wsOrigin;
+        f.lsView = rotation * glm::translate(glm::mat4(1.0f), p.wsOrigin);
+    }
+    return f;
 }
 
 // How far toward the sun (+Z in ls) the box reaches beyond the slice (seed 000: casters outside
@@ -179,19 +215,25 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     validateSplits(splits, index);
     validateFit(p);
     CascadeFit out;
-    out.lsView = lightViewMatrix(wsLightDir);
+    const glm::mat4 rotation = lightViewMatrix(wsLightDir);
+    LightFrame frame = lightFrame(cam, rotation, p);
+    frame.camera.fovY = std::max(frame.camera.fovY, std::min(p.minFovY, glm::radians(179.0f)));
+    out.lsView = frame.lsView;
     const auto i = static_cast<std::size_t>(index);
     out.vsNear = p.fit == FitMode::Scene ? splits[0] : splits[i];  // seed 004 "fit to scene"
     out.vsFar = splits[i + 1];
-    SliceBox box = p.fit == FitMode::Sphere ? sphereBox(cam, out.vsNear, out.vsFar, out.lsView)
-                                            : cornerBox(cam, out.vsNear, out.vsFar, out.lsView);
+    SliceBox box = p.fit == FitMode::Sphere ? sphereBox(frame.camera, out.vsNear, out.vsFar, rotation)
+                                            : cornerBox(frame.camera, out.vsNear, out.vsFar, rotation);
     if (p.fit == FitMode::Samples && p.lsSamples) {
-        box = samplesBox(*p.lsSamples, box, p);  // padded there, by the wider of the two paddings
+        // The reduction's bounds are in the rotation-only frame of scene coordinates: moved into
+        // this one by lsView's translation.
+        const glm::vec3 shift(frame.lsView[3]);
+        box = samplesBox({p.lsSamples->min + shift, p.lsSamples->max + shift}, box, p);
         out.fittedToSamples = true;
     } else {
         box = padBox(box, p.padTexels, p.mapSize);
     }
-    if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize);
+    if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize, frame.phase);
     out.lsSlice = box.ls;
     const Aabb ls = extendZ(box.ls, out.lsView, p);
     out.lsBox = ls;

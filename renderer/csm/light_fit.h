@@ -33,10 +33,23 @@ struct FitParams {
     // (depth_bounds.h); nullopt (no sample, or not reduced) falls back to the slice's box.
     std::optional<Aabb> lsSamples;
     float samplePadTexels = 2.0f;     // samples box grown by this many texels on each side (filter taps)
+    // Fit for at least this vertical FOV (radians; 0 = the camera's): a zoom below it keeps the
+    // box's size, so with stabilize its texel grid stays put (cascades.fitFovY).
+    float minFovY = 0.0f;
+    // Where the scene sits in the engine's world (Settings::origin). The box is fitted and snapped
+    // in world coordinates (scene + wsOrigin), as an engine far from its origin would, and the
+    // result expressed in scene coordinates (lsView maps scene -> ls).
+    glm::vec3 wsOrigin{0.0f};
+    // Light space centred on the camera's eye, the grid's phase (the eye's world light-space
+    // position modulo a texel) taken in double: the snapping works in metres near the camera and
+    // lands on the world grid however far the origin (cascades.cameraRelative).
+    bool cameraRelative = false;
 };
 
 struct CascadeFit {
-    glm::mat4 lsView{1.0f};     // = lightViewMatrix(dir)
+    // Scene -> ls: lightViewMatrix(dir), times translate(wsOrigin) (world light space) or
+    // translate(-eye) (camera-relative); rotation only when both are zero.
+    glm::mat4 lsView{1.0f};
     glm::mat4 lsProj{1.0f};     // orthographic, ls box -> clip
     glm::mat4 viewProj{1.0f};   // lsProj * lsView: world -> light clip
     Aabb lsBox;                 // box in light view space; +Z toward the sun (max.z is the near side)
@@ -58,6 +71,8 @@ struct CascadeFit {
 //   1/16 of the slice box's so it changes in steps, then snapped like the others.
 // - padTexels: the box grown on each x,y side so the slice keeps padTexels texels to the rim.
 // - stabilize: min x,y moved down to a multiple of the texel size, max = min + size (seed 001).
+//   Far from the origin in world light space (p.wsOrigin, float) the multiple is rounded to the
+//   float grid of its large coordinates; with p.cameraRelative it is exact (see FitParams).
 // - z: the slice's range, extended toward the sun by zExtensionDistance, or unioned with the
 //   scene bounds (seed 003, using transformAabb), or left as is for None/Pancake.
 CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, int index,

@@ -30,6 +30,17 @@ void addFilterReads(PassWork& w, const csm::FilterTaps& t) {
     w.filterTaps += w.fragments * std::uint64_t(t.taps);
     w.bytesRead += w.fragments * std::uint64_t(t.texels) * std::uint64_t(t.bytesPerTexel);
 }
+
+// cascades.matricesOneFrameLate (three.js #30053): the maps just drawn, sampled through the light
+// matrices of the frame before, when there is one with as many cascades of the same sizes.
+csm::CascadePlan sampledPlan(const Settings& s, const csm::CascadePlan& plan, const std::vector<csm::CascadeFit>& previous) {
+    csm::CascadePlan sampled = plan;
+    if (!s.cascades.matricesOneFrameLate || previous.size() != plan.cascades.size()) return sampled;
+    for (std::size_t i = 0; i < previous.size(); ++i)
+        if (previous[i].mapSize != plan.cascades[i].mapSize) return plan;
+    for (std::size_t i = 0; i < previous.size(); ++i) sampled.cascades[i].viewProj = previous[i].viewProj;
+    return sampled;
+}
 }  // namespace
 
 Renderer::Renderer(const Scene& scene) : scene_(scene) {
@@ -70,7 +81,9 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
     shadowPass(s, stats);
-    cascadeBlock_.upload(cascadeBlock(s, plan_));  // after: a kept map brings the fit it was drawn with
+    // After: a kept map brings the fit it was drawn with.
+    cascadeBlock_.upload(cascadeBlock(s, sampledPlan(s, plan_, previousFits_)));
+    previousFits_ = plan_.cascades;
     auditZExtension(s, stats);
     const bool moments = isMomentFilter(s.filter.kind);
     if (moments) {

@@ -62,7 +62,8 @@ public:
     GLuint shadowMapTexture(int cascade = 0) const { return shadowMaps_.texture(cascade); }
     GLuint depthTexture() const { return target_.depthTexture(); }  // main pass depth, D32F
     // Of the last render(); a cascade whose map an update interval kept holds the fit that map
-    // was drawn with (its vsNear, vsFar are this frame's).
+    // was drawn with (its vsNear, vsFar are this frame's). With cascades.matricesOneFrameLate the
+    // shading passes sample through the previous render()'s viewProj instead (not shown here).
     const csm::CascadePlan& plan() const { return plan_; }
     void setOptions(const RenderOptions& o) { options_ = o; }
     const RenderOptions& options() const { return options_; }
@@ -114,6 +115,7 @@ private:
     LinePass lines_;
     OffscreenTarget target_;
     csm::CascadePlan plan_;
+    std::vector<csm::CascadeFit> previousFits_;  // the last render()'s, for cascades.matricesOneFrameLate
     std::unique_ptr<DepthBoundsPass> depthBounds_;  // on first use
     gpu::UniformBuffer<gpu_if::FrameBlock> frameBlock_;
     gpu::UniformBuffer<gpu_if::CascadeBlock> cascadeBlock_;

@@ -46,6 +46,9 @@ std::vector<FieldInfo> sceneAndCameraRows() {
         {.path = "ground", .label = "Ground plane",
          .help = "Adds a ground, 4x the scene's width, under its lowest point: for glTF scenes whose shadows have nowhere to fall.",
          .kind = K::Bool, .change = C::Scene, ST_FIELD_ACCESS(ground)},
+        {.path = "origin", .label = "World origin offset",
+         .help = "Where the scene sits in the engine's world: light matrices built far out lose float precision unless camera-relative.",
+         .unit = "m", .kind = K::Vec3, .min = -1e7, .max = 1e7, .step = 1, ST_FIELD_ACCESS(origin)},
         {.path = "camera.position", .label = "Camera position",
          .help = "Where the viewer stands; moving it shows how the cascades follow the camera.",
          .unit = "m", .kind = K::Vec3, .min = -1e6, .max = 1e6, .step = 0.1, ST_FIELD_ACCESS(camera.position)},
@@ -154,6 +157,15 @@ std::vector<FieldInfo> cascadeFitRows() {
         {.path = "cascades.fadeBand", .label = "Fade band",
          .help = "Fraction of the last cascade's depth range faded to lit at its far end, so shadows end softly, not at a line.",
          .kind = K::Float, .min = 0, .max = 1, .step = 0.01, .shader = "fadeBand", ST_FIELD_ACCESS(cascades.fadeBand)},
+        {.path = "cascades.cameraRelative", .label = "Camera-relative light space",
+         .help = "Builds the light boxes around the camera, not the world origin, so texel snapping stays exact far from the origin.",
+         .kind = K::Bool, ST_FIELD_ACCESS(cascades.cameraRelative)},
+        {.path = "cascades.fitFovY", .label = "Fit FOV",
+         .help = "Fits the light boxes for at least this vertical FOV, so a zoom below it keeps their size (no shimmer); 0 = the camera's.",
+         .unit = "deg", .kind = K::Float, .min = 0, .max = 179, .step = 0.5, ST_FIELD_ACCESS(cascades.fitFovY)},
+        {.path = "cascades.matricesOneFrameLate", .label = "Matrices one frame late",
+         .help = "Debug: samples the maps through the previous frame's light matrices (three.js #30053), to see that bug's flicker.",
+         .kind = K::Bool, ST_FIELD_ACCESS(cascades.matricesOneFrameLate)},
     };
 }
 

@@ -165,22 +165,24 @@ std::string numericReason(const Settings& s, std::string_view path) {
 }
 
 constexpr std::string_view kIndependent[] = {
-    "scene", "notes", "ground", "camera.position", "camera.target", "camera.fovY", "camera.nearPlane",
+    "scene", "notes", "ground", "origin", "camera.position", "camera.target", "camera.fovY", "camera.nearPlane",
     "camera.farPlane", "light.azimuth", "light.elevation", "light.intensity", "light.ambient",
     "light.angularDiameter", "cascades.count", "cascades.shadowDistance", "cascades.depthBounds",
     "cascades.mapSize", "cascades.fit", "cascades.stabilize", "cascades.casterCulling", "cascades.updateInterval",
-    "cascades.blendBand", "cascades.fadeBand", "filter.padding", "bias.constant", "bias.slope",
+    "cascades.blendBand", "cascades.fadeBand", "cascades.cameraRelative", "cascades.fitFovY",
+    "cascades.matricesOneFrameLate", "filter.padding", "bias.constant", "bias.slope",
     "bias.normalOffset", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
     "output.height", "path.frames", "path.keyframes", "measure.sunRays", "measure.artifactTexels",
     // The mode fields themselves: each one always applies.
     "filter.kind", "filter.screenSpace", "filter.contact", "cascades.scheme", "cascades.zExtension", "cascades.storage",
     "cascades.selection", "output.view"};
 
-// Not shadow settings: what is shadowed, seen, shown or measured, or free text; and caster
-// culling, which only skips casters that cannot reach the image (the image stays the same).
+// Not shadow settings: what is shadowed, seen, shown or measured, or free text; caster culling,
+// which only skips casters that cannot reach the image (the image stays the same); and the
+// one-frame-late matrices, a bug reproduced on purpose, never a choice to tune.
 bool isShadowSetting(std::string_view path) {
     if (path.starts_with("cascades.") || path.starts_with("filter.") || path.starts_with("bias."))
-        return path != "cascades.casterCulling";
+        return path != "cascades.casterCulling" && path != "cascades.matricesOneFrameLate";
     return false;
 }
 

@@ -205,6 +205,11 @@ struct CascadeSettings {
     bool casterCulling = true;             // cull casters whose shadow cannot reach the slice (Bittner 2011)
     std::vector<float> updateInterval;     // frames between redraws of cascade i (whole numbers >= 1); missing = 1
     float fadeBand = 0.0f;                 // fraction of the last cascade's range faded to lit at its far end, 0..1
+    // Light-space math relative to the camera (the texel grid's phase taken in double), so snapping
+    // stays exact when Settings::origin puts the scene far from the world origin.
+    bool cameraRelative = false;
+    float fitFovY = 0.0f;                  // degrees: fit the boxes for at least this vertical FOV; 0 = the camera's
+    bool matricesOneFrameLate = false;     // debug: sample the maps through the previous frame's matrices
     bool operator==(const CascadeSettings&) const = default;
 };
 
@@ -316,6 +321,10 @@ struct Settings {
     std::string scene = "builtin:yard";  // "builtin:NAME" or a glTF path relative to the preset
     std::string notes;                   // free text: what of the source system is not reproduced
     bool ground = false;                 // a ground quad under a glTF scene that has none (SceneOptions)
+    // Where the scene sits in the engine's world, metres. The light matrices are built from world
+    // positions (scene + origin) as an engine far from its origin would, then expressed back in scene
+    // coordinates: camera, path and geometry stay relative to the scene (renderer/csm/light_fit.h).
+    glm::vec3 origin{0.0f};
     CameraSettings camera;
     LightSettings light;
     CascadeSettings cascades;

@@ -165,5 +165,38 @@ TEST(SamplesFitTest, NoSamplesFallsBackToTheSliceBox) {
     EXPECT_EQ(a.lsBox.max, b.lsBox.max);
 }
 
+// The reduction's bounds are in the rotation-only light frame of scene coordinates; fitted in a
+// camera-relative frame 50 km out (or in world light space at the origin), the box still holds
+// every sample, checked through the matrix the shaders use on the samples' scene positions.
+TEST(SamplesFitTest, BoxHoldsEverySampleInACameraRelativeFrameFarOut) {
+    CameraParams cam;
+    cam.wsPosition = {3, 12, 40};
+    cam.wsTarget = {-5, 0, 0};
+    cam.nearPlane = 0.5f;
+    cam.farPlane = 300.0f;
+    const std::vector<float> splits{0.5f, 20.0f, 80.0f, 300.0f};
+    const glm::vec3 dir = lightDirection(35.0f, 40.0f);
+    const glm::mat4 rotation = lightViewMatrix(dir);
+    for (const bool relative : {false, true}) {
+        FitParams p;
+        p.stabilize = true;
+        p.zExtension = ZExtension::None;
+        p.fit = FitMode::Samples;
+        p.cameraRelative = relative;
+        p.wsOrigin = relative ? glm::vec3(50000.0f, 0.0f, 0.0f) : glm::vec3(0.0f);
+        for (int i = 0; i < 3; ++i) {
+            const SampleSet samples = samplesIn(cam, splits[std::size_t(i)], splits[std::size_t(i) + 1], rotation, 3u + unsigned(i));
+            p.lsSamples = samples.bounds;
+            const CascadeFit fit = fitCascade(cam, splits, i, dir, p);
+            for (const glm::vec3& q : samples.ls) {
+                const glm::vec4 scene = glm::inverse(rotation) * glm::vec4(q, 1.0f);
+                const glm::vec4 clip = fit.viewProj * scene;
+                ASSERT_LE(std::max({std::abs(clip.x), std::abs(clip.y), std::abs(clip.z)}), 1.0f + 1e-4f)
+                    << "cascade " << i << (relative ? ", camera-relative" : "");
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace st::csm

@@ -85,6 +85,54 @@ TEST(FlickerTest, OnlyReceiversOfTheFirstFrameAreSamplePoints) {
     EXPECT_EQ(meter.report().flipRate, 0.0);
 }
 
+// The saccade tool's unit on a built sequence of four frames, one pixel per case: each row of
+// `filtered` is a pixel's factor per frame (N.L 1 unless set), the count is known by hand.
+TEST(FlickerTest, AlternatingPixelsCountUpDownStepsOfAtLeastTwoHundredthsOverThreeFrames) {
+    const std::vector<std::vector<float>> filtered = {
+        {0.0f, 1.0f, 0.0f, 1.0f},      // (0,0) alternates by 1: counts
+        {0.0f, 0.25f, 0.5f, 0.75f},    // (1,0) monotonic: no
+        {0.5f, 0.51f, 0.5f, 0.51f},    // (2,0) alternates by 0.01, under the step: no
+        {0.0f, 1.0f, 1.0f, 0.0f},      // (3,0) up, still, down: the steps are not consecutive: no
+        {1.0f, 0.5f, 1.0f, 1.0f},      // (0,1) down then up over 3 frames, then still: counts
+        {0.0f, 1.0f, 0.0f, 1.0f},      // (1,1) N.L 0.01 below: luminance moves by 0.01: no
+        {0.0f, 1.0f, 0.0f, 1.0f},      // (2,1) faces away from the sun: not a sample point: no
+        {0.5f, 0.53f, 0.5f, 0.53f},    // (3,1) alternates by 0.03: counts
+    };
+    MeasureSamples first = test::floorSamples(4, 2);
+    first.normal[5].w = 0.01f;
+    first.normal[6].w = -1.0f;
+    FlickerMeter meter(first);
+    for (std::size_t f = 0; f < 4; ++f) {
+        MeasureSamples frame = first;
+        for (std::size_t i = 0; i < filtered.size(); ++i) test::setMap(frame, int(i % 4), int(i / 4), 1.0f, filtered[i][f]);
+        meter.add(frame.shadow);
+    }
+    const FlickerReport r = meter.report();
+    EXPECT_EQ(r.alternatingPixels, 3u);
+    EXPECT_EQ(r.flipRate, 0.0) << "the hard result never changed";
+
+    // The light's intensity scales the luminance: at 0.01 the unit swing of (0,0) is a 0.01 step.
+    FlickerMeter dim(first, {}, 0.01f);
+    for (std::size_t f = 0; f < 4; ++f) {
+        MeasureSamples frame = first;
+        for (std::size_t i = 0; i < filtered.size(); ++i) test::setMap(frame, int(i % 4), int(i / 4), 1.0f, filtered[i][f]);
+        dim.add(frame.shadow);
+    }
+    EXPECT_EQ(dim.report().alternatingPixels, 0u);
+}
+
+TEST(FlickerTest, TwoFramesCannotAlternate) {
+    MeasureSamples a = test::floorSamples(1, 1);
+    MeasureSamples b = a;
+    test::setMap(b, 0, 0, 0.0f, 0.0f);
+    FlickerMeter meter(a);
+    meter.add(a.shadow);
+    meter.add(b.shadow);
+    EXPECT_EQ(meter.report().alternatingPixels, 0u);
+    meter.add(a.shadow);  // the third frame goes back up: one alternation
+    EXPECT_EQ(meter.report().alternatingPixels, 1u);
+}
+
 TEST(FlickerTest, FramesOfAnotherSizeAreRejected) {
     FlickerMeter meter(test::floorSamples(2, 2));
     EXPECT_THROW(meter.add(test::floorSamples(3, 2).shadow), std::invalid_argument);

@@ -103,10 +103,12 @@ TEST(KindDescriptorsTest, TunableFieldsAreTheShadowSettingsThatApply) {
                           "bias.constantScale", "cascades.blendBand", "cascades.fadeBand"})
         EXPECT_TRUE(contains(paths, p)) << p;
     for (const char* p : {"camera.fovY", "light.elevation", "output.width", "measure.sunRays", "notes",
-                          "cascades.casterCulling", "filter.evsmNegative", "filter.size", "bias.receiverPlane",
+                          "cascades.casterCulling", "cascades.matricesOneFrameLate", "origin", "filter.evsmNegative",
+                          "filter.size", "bias.receiverPlane",
                           "bias.normalOffsetScale", "cascades.manualSplits", "filter.screenBlurRadius"})
         EXPECT_FALSE(contains(paths, p)) << p;
-    EXPECT_EQ(applicableFields(s).size() - tunableFields(s).size(), 20u);  // scene, camera, light, output, ...
+    // scene, origin, camera, light, output, ..., and the one-frame-late debug knob
+    EXPECT_EQ(applicableFields(s).size() - tunableFields(s).size(), 22u);
 }
 
 TEST(KindDescriptorsTest, FilterKindsNameTheStoragesTheySample) {

@@ -47,8 +47,8 @@ TEST_F(PresetFileTest, SavedPresetLoadsBackEqual) {
 TEST_F(PresetFileTest, SavedTextIsPrettyAndInTableOrder) {
     savePresetAtomic(Settings{}, dir / "p.json");
     const std::string text = read(dir / "p.json");
-    EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"scene\": \"builtin:yard\",\n  \"notes\": \"\",\n  \"ground\": false,\n  \"camera\": {\n"
-                         "    \"position\": [\n",
+    EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"scene\": \"builtin:yard\",\n  \"notes\": \"\",\n  \"ground\": false,\n  \"origin\": [\n"
+                         "    0.0,\n",
                          0),
               0u)
         << text;

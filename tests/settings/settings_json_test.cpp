@@ -66,7 +66,7 @@ TEST(SettingsJsonTest, TopLevelMustBeAnObject) {
 
 TEST(SettingsJsonTest, UnknownTopLevelKey) {
     const auto errors = readErrors(preset({{"cascade", {{"count", 2}}}}));
-    EXPECT_TRUE(hasMessage(errors, "presets/bad.json: cascade: unknown key, expected one of: version, scene, notes, ground, "
+    EXPECT_TRUE(hasMessage(errors, "presets/bad.json: cascade: unknown key, expected one of: version, scene, notes, ground, origin, "
                                    "camera, light, cascades, filter, bias, output, path, measure"));
 }
 
@@ -236,8 +236,8 @@ TEST(SettingsJsonTest, ReportsEveryErrorNotJustTheFirst) {
     } catch (const SettingsError& e) {
         const std::vector<std::string> expected = {
             "p.json: version: missing; every preset must say \"version\": 1",
-            "p.json: colour: unknown key, expected one of: version, scene, notes, ground, camera, light, cascades, filter, bias, "
-            "output, path, measure",
+            "p.json: colour: unknown key, expected one of: version, scene, notes, ground, origin, camera, light, cascades, "
+            "filter, bias, output, path, measure",
             "p.json: cascades.count: must be in 1..8, got 12",
             "p.json: cascades.mapSize: must be a power of two in 256..8192, got 1000",
         };

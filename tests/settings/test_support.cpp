@@ -13,6 +13,7 @@ Settings everyFieldChanged() {
     s.scene = "scenes/sponza/Sponza.gltf";
     s.notes = "No contact hardening; the source blends cascades in screen space.";
     s.ground = true;
+    s.origin = {50000.0f, -12.5f, 2.25f};
     s.camera = {.position = {1.5f, 2.25f, -3.0f}, .target = {0.5f, 0.0f, 1.0f}, .fovY = 45.5f,
                 .nearPlane = 0.25f, .farPlane = 250.0f};
     s.light = {.azimuth = -120.5f, .elevation = 12.25f, .intensity = 2.5f, .ambient = 0.3f, .angularDiameter = 1.5f};
@@ -20,7 +21,8 @@ Settings everyFieldChanged() {
                   .shadowDistance = 150.0f, .depthBounds = DepthBounds::Fit, .mapSize = 2048, .storage = CascadeStorage::Atlas,
                   .mapSizes = {2048, 1024, 512}, .atlasPadding = 4, .fit = FitMode::Sphere, .stabilize = true,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .selection = Selection::Map,
-                  .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f};
+                  .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f,
+                  .cameraRelative = true, .fitFovY = 70.0f, .matricesOneFrameLate = true};
     s.filter = {.kind = FilterKind::PcfNxN, .size = 5, .weights = FilterWeights::Gaussian, .padding = true,
                 .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f,
                 .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
