@@ -102,3 +102,36 @@ TEST_F(TuneGLTest, AnEvaluationIsMeasuresFigures) {
 
 }  // namespace
 }  // namespace st::tune
+
+namespace st::tune {
+namespace {
+
+// presets/tuned/<scene>-as-<reference>.json (docs/tuning.md, scripts/tune_all.sh): each loads, is
+// the tune of a shipped scene preset at a shipped reference's budget, and keeps that scene's file
+// and output size's aspect.
+TEST(TunedPresetsTest, EachLoadsAndNamesItsSceneAndReference) {
+    namespace fs = std::filesystem;
+    const fs::path root = ST_SOURCE_DIR "/presets";
+    int count = 0;
+    for (const auto& e : fs::directory_iterator(root / "tuned")) {
+        if (e.path().extension() != ".json") continue;
+        SCOPED_TRACE(e.path().string());
+        ++count;
+        const std::string stem = e.path().stem().string();
+        const std::size_t as = stem.find("-as-");
+        ASSERT_NE(as, std::string::npos) << "named <scene>-as-<reference>";
+        const std::string scene = stem.substr(0, as), ref = stem.substr(as + 4);
+        const fs::path scenePreset = scene == "yard" ? root / "default.json" : root / "scenes" / (scene + ".json");
+        EXPECT_TRUE(fs::exists(root / (ref + ".json")) || fs::exists(root / "engines" / (ref + ".json"))) << ref;
+        ASSERT_TRUE(fs::exists(scenePreset)) << scenePreset;
+        const Settings tuned = loadPreset(e.path());
+        const Settings input = loadPreset(scenePreset);
+        EXPECT_EQ(fs::path(tuned.scene).filename(), fs::path(input.scene).filename());
+        EXPECT_EQ(tuned.output.width * input.output.height, tuned.output.height * input.output.width);
+        EXPECT_EQ(tuned.light.azimuth, input.light.azimuth);
+    }
+    EXPECT_GE(count, 14) << "the yard and six scenes, each against ogldev-49 and Unreal's default";
+}
+
+}  // namespace
+}  // namespace st::tune
