@@ -34,23 +34,30 @@ nlohmann::json readJson(const fs::path& file) {
     std::ifstream in(file);
     return nlohmann::json::parse(in, nullptr, false);
 }
+// A fresh folder whose config gives the editor a 1000x700 window.
+fs::path freshWindowDir(const std::string& prefix) {
+    const fs::path dir = fs::temp_directory_path() / (prefix + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "config" / "shadowtune");
+    std::ofstream(dir / "config" / "shadowtune" / "window.json") << R"({"width": 1000, "height": 700})";
+    return dir;
+}
+
+// The drive script's start: the editor on dx-sdk-csm11 in the background, then wait until it settles.
+std::string launchSettled(const fs::path& dir, const fs::path& status) {
+    return std::string("set -u\n") + kSettled + "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" +
+           status.string() + "' > '" + (dir / "editor.txt").string() + "' 2>&1 &\npid=$!\nsettled\n";
+}
 }  // namespace
 
 TEST(EditorIdleTest, ASettledEditorDrawsNothingUntilAnEventComes) {
     if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "xvfb-run or xdotool missing (scripts/setup.sh installs xvfb and xdotool)";
-    const fs::path dir = fs::temp_directory_path() / ("st-idle-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir / "config" / "shadowtune");
-    std::ofstream(dir / "config" / "shadowtune" / "window.json") << R"({"width": 1000, "height": 700})";
+    const fs::path dir = freshWindowDir("st-idle-");
     const fs::path status = dir / "status.json";
     // Copies of the status file taken at the moments the test compares (the editor rewrites it).
     std::ofstream(dir / "drive.sh")
-        << "set -u\n" << kSettled
-        << "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" << status.string()
-        << "' > '" << (dir / "editor.txt").string() << "' 2>&1 &\n"
-           "pid=$!\n"
-           "settled\n"
+        << launchSettled(dir, status) <<
            "cp '" << status.string() << "' idle-start.json\n"
            "sleep 2\n"
            "cp '" << status.string() << "' idle-end.json\n"
@@ -99,17 +106,10 @@ TEST(EditorIdleTest, ASettledEditorDrawsNothingUntilAnEventComes) {
 TEST(EditorOrbitTest, AltDragOrbitsTheCamera) {
     if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "xvfb-run or xdotool missing (scripts/setup.sh installs xvfb and xdotool)";
-    const fs::path dir = fs::temp_directory_path() / ("st-orbit-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir / "config" / "shadowtune");
-    std::ofstream(dir / "config" / "shadowtune" / "window.json") << R"({"width": 1000, "height": 700})";
+    const fs::path dir = freshWindowDir("st-orbit-");
     const fs::path status = dir / "status.json";
     std::ofstream(dir / "drive.sh")
-        << "set -u\n" << kSettled
-        << "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file '" << status.string()
-        << "' > '" << (dir / "editor.txt").string() << "' 2>&1 &\n"
-           "pid=$!\n"
-           "settled\n"
+        << launchSettled(dir, status) <<
            "cp '" << status.string() << "' before.json\n"
            // Over the scene viewport (1000x700: the columns leave x 340..740), resting so the probe reads it.
            "xdotool mousemove 540 200; sleep 1\n"
