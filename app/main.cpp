@@ -1,5 +1,5 @@
 // shadowtune: entry point. Each command lives in its own file and registers itself here.
-#include "app/commands.h"
+#include "app/cli/commands.h"
 #include "app/version.h"
 #include "report/chart_fonts.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The hover probe over the scene: what the frame on screen did at the pixel under the mouse.
-// The app samples the frame (the measurement pass's per-pixel read-back, app/scene_probe.h) and
+// The app samples the frame (the measurement pass's per-pixel read-back, app/editor/scene_probe.h) and
 // fills a ProbeView; the UI shows it next to the mouse and says which pixel it wants next.
 namespace st::ui {
 

@@ -1,6 +1,6 @@
 // `shadowtune compare` without GL: figures and deltas, the shadow diff, the table's formats, the
 // composed images (cairo text only ever under the pictures).
-#include "app/compare_images.h"
+#include "app/images/compare_images.h"
 #include "metrics/compare.h"
 #include "tests/metrics/samples_builder.h"
 

@@ -1,7 +1,7 @@
 // The legends of errors.png and artifacts.png: every colour the image uses is in its legend with
 // the image's pixel count of it, and withLegend() keeps the image and draws the strip under it.
-#include "app/label_strip.h"
-#include "app/legend_image.h"
+#include "app/images/label_strip.h"
+#include "app/images/legend_image.h"
 #include "metrics/metric_images.h"
 #include "metrics/soft_accuracy.h"
 #include "tests/metrics/samples_builder.h"

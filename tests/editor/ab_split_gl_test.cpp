@@ -1,7 +1,7 @@
 // The editor's A/B split, composed headless: left of the divider must be A's method rendered on
 // the live view (a render of its own), right of it the live frame; the halves of two methods that
 // differ must differ, so a split that showed one image twice would fail.
-#include "app/ab_split_render.h"
+#include "app/editor/ab_split_render.h"
 #include "tests/metrics/metrics_gl_util.h"
 #include "tests/support/gl_fixture.h"
 

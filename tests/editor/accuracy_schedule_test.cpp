@@ -1,6 +1,6 @@
 // When the editor's Accuracy panel computes: made-up frame times and change events in, actions
 // out. No window, no threads, no clock.
-#include "app/accuracy_schedule.h"
+#include "app/editor/accuracy_schedule.h"
 
 #include <gtest/gtest.h>
 

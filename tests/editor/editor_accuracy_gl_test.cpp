@@ -2,7 +2,7 @@
 // made-up times as the editor's loop would, the worker runs for real. Once still, the panel must
 // show measure's figures; a change while computing must hide everything until the new frame's
 // own figures arrive.
-#include "app/editor_accuracy.h"
+#include "app/editor/editor_accuracy.h"
 #include "metrics/figure_table.h"
 #include "tests/metrics/metrics_gl_util.h"
 #include "tests/support/gl_fixture.h"

@@ -2,7 +2,7 @@
 // editor's frames would. A run ends Done with every point (A's reference measuring what the grid
 // point with A's values measures), a cancel stops it early with the points measured so far, a
 // refused sweep never starts a child, and a missing binary is an error, not a crash.
-#include "app/editor_sweep.h"
+#include "app/editor/editor_sweep.h"
 #include "renderer/settings/settings_json.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "app/fly_camera.h"
+#include "app/editor/fly_camera.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Issue 21 #2: the editor draws while something happens and waits for an event otherwise.
-#include "app/frame_pacer.h"
+#include "app/editor/frame_pacer.h"
 
 #include <gtest/gtest.h>
 

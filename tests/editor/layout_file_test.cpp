@@ -1,6 +1,6 @@
 // The editor's layout file: what the user arranged comes back, and a broken file opens the
 // editor with the default layout instead of failing (it is a preference, not a document).
-#include "app/layout_file.h"
+#include "app/editor/layout_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The preset list includes sub-folders but not sweeps (issue 13 #9).
-#include "app/preset_list.h"
+#include "app/editor/preset_list.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

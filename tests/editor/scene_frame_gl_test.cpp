@@ -2,7 +2,7 @@
 // again. That is exact only if rendering the same inputs again gives the same pixels whatever
 // was rendered in between (the cascade cache, the depth bounds), and if a map an update interval
 // deferred is caught up: checked here with the real renderer against fresh renders.
-#include "app/scene_frame.h"
+#include "app/editor/scene_frame.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/scene.h"
 #include "tests/metrics/metrics_gl_util.h"

@@ -1,6 +1,6 @@
 // Issue 13 #10: the editor reuses the scene image only while nothing it shows changed, and
 // scales the image while the view moves so a moving frame keeps near its target time.
-#include "app/scene_frame.h"
+#include "app/editor/scene_frame.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // computation from the cascade plan: the cascade by interval selection of the pixel's view
 // depth, the cascade's texel size, the slope bias from the normal and the sun. The truth comes
 // from the Accuracy panel's per-pixel classes.
-#include "app/scene_probe.h"
+#include "app/editor/scene_probe.h"
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/scene/scene.h"
 #include "tests/metrics/metrics_gl_util.h"

@@ -1,7 +1,7 @@
 // The side view's split-plane handles: each sits where the side camera shows the centre of the
 // split plane (the centroid of the slice's far corners, computed here from the frustum corners),
 // and its per-metre direction is where the next centimetres of depth go.
-#include "app/side_split_handles.h"
+#include "app/editor/side_split_handles.h"
 #include "renderer/csm/frustum.h"
 #include "renderer/settings/settings_json.h"
 

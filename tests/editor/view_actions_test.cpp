@@ -1,6 +1,6 @@
 // Camera actions do not change tuning settings behind the artist's back (issue 13 #4).
-#include "app/fly_camera.h"
-#include "app/view_actions.h"
+#include "app/editor/fly_camera.h"
+#include "app/editor/view_actions.h"
 
 #include <gtest/gtest.h>
 

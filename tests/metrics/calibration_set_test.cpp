@@ -1,6 +1,6 @@
 // `shadowtune calibrate`'s fixed set: every shipped preset it names loads and validates, and the
 // set spans the work the sweeps ask for (sizes, map sizes, cascade counts, filters, depth bounds).
-#include "app/calibration_set.h"
+#include "app/cli/calibration_set.h"
 #include "sweep/sweep_spec.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Short key taps at a low frame rate reach the UI, and Tab does not move widget focus
 // (issue 13 #3). ImGui's null backend with the app's key queue between "GLFW" and ImGui.
-#include "app/key_queue.h"
+#include "app/editor/key_queue.h"
 #include "tests/ui/ui_driver.h"
 #include "tests/ui/ui_test_data.h"
 

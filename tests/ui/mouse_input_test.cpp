@@ -1,7 +1,7 @@
 // Quick clicks and drags at a low frame rate reach the widget they were made on (issue 13 #3).
 // ImGui's null backend with the app's mouse queue between "GLFW" and ImGui, against what ImGui
 // 1.86's GLFW backend did: latch a press, take the position from the cursor at NewFrame.
-#include "app/mouse_queue.h"
+#include "app/editor/mouse_queue.h"
 #include "tests/ui/ui_driver.h"
 #include "tests/ui/ui_test_data.h"
 

@@ -1,0 +1,271 @@
+#include "app/editor/editor_sweep.h"
+
+#include "renderer/image/image_io.h"
+#include "renderer/settings/settings_json.h"
+#include "report/pareto.h"
+#include "sweep/sweep_run.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace st::app {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr auto kScanInterval = std::chrono::milliseconds(250);  // point files are looked for at most this often
+
+// A relative glTF path made absolute, so base.json loads from the temporary folder.
+std::string absoluteScene(const std::string& scene, const fs::path& presetDir) {
+    if (scene.rfind("builtin:", 0) == 0 || fs::path(scene).is_absolute()) return scene;
+    return fs::absolute(presetDir / scene).lexically_normal().string();
+}
+
+fs::path newRunFolder() {
+    std::error_code ec;
+    fs::path tmp = fs::temp_directory_path(ec);
+    if (ec) tmp = "/tmp";
+    std::string pattern = (tmp / "shadowtune-sweep-XXXXXX").string();
+    if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a folder under " + tmp.string());
+    return pattern;
+}
+
+std::vector<std::string> lastLines(const fs::path& file, std::size_t count) {
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(line);
+    if (lines.size() > count) lines.erase(lines.begin(), lines.end() - long(count));
+    return lines;
+}
+
+// The hover text: the figure table's Sweep-panel rows, one "label value" line each.
+std::string figureLines(const sweep::PointResult& r, const metrics::FigureTable& table) {
+    std::string text;
+    for (const metrics::FigureRow* row : metrics::figuresShown(metrics::InEditorSweep, table)) {
+        const double v = r.figure(row->key);
+        text += (text.empty() ? "" : "\n") + row->label + " " +
+                metrics::formatValue(row->unit, std::isfinite(v) ? std::optional<double>(v) : std::nullopt);
+    }
+    return text;
+}
+
+// A reference's method (what the sweep measured of it: sweep_spec.cpp onBase) as assignments.
+std::vector<std::pair<std::string, std::string>> methodAssignments(const nlohmann::ordered_json& preset) {
+    std::vector<std::pair<std::string, std::string>> out;
+    const Settings s = fromJson(nlohmann::json::parse(preset.dump()), "sweep point");
+    for (const FieldInfo& f : fieldTable()) {
+        const std::string_view path = f.path;
+        if (path.rfind("cascades.", 0) == 0 || path.rfind("filter.", 0) == 0 || path.rfind("bias.", 0) == 0)
+            out.emplace_back(std::string(path), fieldValueToJson(f, f.get(s)).dump());
+    }
+    return out;
+}
+
+}  // namespace
+
+fs::path writeEditorSweep(const fs::path& dir, const ui::SweepRequest& request, const Settings& base,
+                          const std::optional<Settings>& a, const fs::path& presetDir) {
+    Settings b = base;
+    b.scene = absoluteScene(base.scene, presetDir);
+    savePresetAtomic(b, dir / "base.json");
+    savePresetAtomic(b, dir / "current.json");
+    nlohmann::ordered_json refs = nlohmann::ordered_json::array({"current.json"});
+    if (a) {
+        Settings as = *a;
+        as.scene = b.scene;  // only its cascades, filter and bias are measured, on the base
+        savePresetAtomic(as, dir / "A.json");
+        refs.push_back("A.json");
+    }
+    nlohmann::ordered_json axes = nlohmann::ordered_json::array();
+    for (const ui::SweepAxisRequest& ax : request.axes) {
+        nlohmann::ordered_json j{{"field", ax.field}};
+        j[ax.range ? "range" : "values"] = nlohmann::ordered_json::parse(ax.values.dump());
+        axes.push_back(std::move(j));
+    }
+    // A still frame: the chart is error against cost of what the camera sees now, and a camera
+    // path would multiply the time of every point by its frames.
+    const nlohmann::ordered_json sweep{{"version", sweep::kSweepVersion},
+                                       {"notes", "written by the editor's Sweep panel"},
+                                       {"base", "base.json"},
+                                       {"set", {{"output.width", request.width}, {"output.height", request.height}, {"path.frames", 0}}},
+                                       {"axes", axes},
+                                       {"references", refs}};
+    const fs::path file = dir / "sweep.json";
+    writeTextAtomic(file, sweep.dump(2) + "\n");
+    return file;
+}
+
+ui::SweepPoint chartPoint(const sweep::PointResult& r, const std::vector<std::string>& axisFields) {
+    ui::SweepPoint p;
+    p.label = r.label;
+    p.reference = r.reference;
+    const sweep::ReportOptions chosen;  // the chart's figures: those `shadowtune sweep` charts by default
+    const auto shown = [&](const metrics::FigureRow& row) { return metrics::shown(row.unit, r.figure(row.key)); };
+    p.cost = shown(sweep::costFigure(chosen.cost));
+    p.memory = shown(sweep::costFigure(sweep::kMemoryChoice));
+    p.error = shown(sweep::errorFigure(chosen.error));
+    p.figures = figureLines(r, metrics::figureTable());
+    if (r.reference) {
+        p.assignments = methodAssignments(r.settings);
+    } else {
+        for (std::size_t i = 0; i < axisFields.size() && i < r.axisValues.size(); ++i)
+            p.assignments.emplace_back(axisFields[i], r.axisValues[i]);
+    }
+    return p;
+}
+
+std::vector<ui::SweepPoint> chartPoints(const std::vector<sweep::PointResult>& results,
+                                        const std::vector<std::string>& axisFields) {
+    std::vector<ui::SweepPoint> points;
+    std::vector<std::pair<double, double>> byTime, byMemory;
+    for (const sweep::PointResult& r : results) {
+        points.push_back(chartPoint(r, axisFields));
+        byTime.push_back({points.back().cost, points.back().error});
+        byMemory.push_back({points.back().memory, points.back().error});
+    }
+    const std::vector<bool> t = report::paretoFront(byTime), m = report::paretoFront(byMemory);
+    for (std::size_t i = 0; i < points.size(); ++i) points[i].frontByTime = t[i], points[i].frontByMemory = m[i];
+    return points;
+}
+
+EditorSweep::EditorSweep(fs::path executable, int costFrames)
+    : executable_(std::move(executable)), costFrames_(costFrames) {}
+
+EditorSweep::~EditorSweep() {
+    if (child_ <= 0) return;
+    ::kill(child_, SIGINT);
+    for (int i = 0; i < 100; ++i) {  // the point being measured: a few seconds at most
+        if (::waitpid(child_, nullptr, WNOHANG) == child_) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ::kill(child_, SIGKILL);
+    ::waitpid(child_, nullptr, 0);
+}
+
+void EditorSweep::fail(std::vector<std::string> errors) {
+    view_.state = ui::SweepView::State::Failed;
+    view_.errors = std::move(errors);
+}
+
+void EditorSweep::start(const ui::SweepRequest& request, const Settings& live, const std::optional<Settings>& a,
+                        const fs::path& presetDir) {
+    if (running()) return;
+    view_ = {};
+    const sweep::ReportOptions chosen;
+    const metrics::FigureRow& cost = sweep::costFigure(chosen.cost);
+    view_.costTitle = cost.axisTitle;
+    view_.costName = cost.label;
+    view_.memoryTitle = sweep::costFigure(sweep::kMemoryChoice).axisTitle;
+    view_.errorTitle = sweep::errorFigure(chosen.error).axisTitle;
+    view_.width = request.width;
+    view_.height = request.height;
+    view_.scene = live.scene;
+    view_.measuredFrom = live;
+    readCount_ = 0;
+    try {
+        dir_ = newRunFolder();
+        view_.folder = (dir_ / "out").string();
+        const fs::path file = writeEditorSweep(dir_, request, live, a, presetDir);
+        spec_ = sweep::loadSweep(file);  // refused here, in the editor, with the reader's messages
+        const std::vector<sweep::Point> points = sweep::expandPoints(*spec_);
+        manifest_ = sweep::manifestOf(*spec_, points, "");
+        view_.total = points.size();
+    } catch (const SettingsError& e) {
+        return fail(e.messages());
+    } catch (const std::exception& e) {
+        return fail({e.what()});
+    }
+    const std::string log = (dir_ / "log.txt").string();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    std::vector<std::string> args = {executable_.string(), "sweep", (dir_ / "sweep.json").string(), "--out",
+                                     view_.folder, "--frames", std::to_string(costFrames_)};
+    std::vector<char*> argv;
+    for (std::string& s : args) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const int rc = ::posix_spawn(&child_, args[0].c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (rc != 0) {
+        child_ = -1;
+        return fail({"cannot run " + args[0] + ": " + std::strerror(rc)});
+    }
+    started_ = Clock::now();
+    lastScan_ = started_ - kScanInterval;
+    view_.state = ui::SweepView::State::Running;
+}
+
+void EditorSweep::cancel() {
+    if (child_ <= 0 || view_.state == ui::SweepView::State::Cancelling) return;
+    ::kill(child_, SIGINT);
+    view_.state = ui::SweepView::State::Cancelling;
+}
+
+void EditorSweep::readNewPoints() {
+    const fs::path points = fs::path(view_.folder) / "points";
+    std::size_t found = 0;
+    std::error_code ec;
+    for (const std::string& id : manifest_->pointIds) found += fs::exists(points / (id + ".json"), ec) ? 1 : 0;
+    view_.done = found;
+    if (found == readCount_) return;
+    try {
+        const std::vector<sweep::PointResult> results = sweep::readPoints(view_.folder, *manifest_);
+        view_.points = chartPoints(results, manifest_->axisFields);
+        readCount_ = results.size();
+    } catch (const std::exception&) {
+        // A file renamed into place between the scan and the read: the next scan reads it.
+    }
+}
+
+void EditorSweep::finish(int status) {
+    child_ = -1;
+    readNewPoints();
+    const bool cancelling = view_.state == ui::SweepView::State::Cancelling;
+    // A child stopped by the cancel exits 130; 0 means it measured every point (Cancel came after
+    // the last one, while it wrote the charts), so the run is done, not "cancelled after 11 of 11".
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        view_.state = ui::SweepView::State::Done;
+    } else if (cancelling) {
+        view_.state = ui::SweepView::State::Cancelled;
+    } else {
+        std::vector<std::string> errors{"the sweep ended with " +
+                                        (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
+                                                           : "signal " + std::to_string(WTERMSIG(status))) +
+                                        "; its last lines (" + (dir_ / "log.txt").string() + "):"};
+        for (std::string& l : lastLines(dir_ / "log.txt", 6)) errors.push_back(std::move(l));
+        fail(std::move(errors));
+    }
+    view_.etaS = -1.0;
+}
+
+void EditorSweep::poll() {
+    if (child_ <= 0) return;
+    const auto now = Clock::now();
+    view_.elapsedS = std::chrono::duration<double>(now - started_).count();
+    int status = 0;
+    if (::waitpid(child_, &status, WNOHANG) == child_) return finish(status);
+    if (now - lastScan_ < kScanInterval) return;
+    lastScan_ = now;
+    readNewPoints();
+    if (view_.done > 0)
+        view_.etaS = view_.elapsedS / double(view_.done) * double(view_.total - view_.done);
+}
+
+}  // namespace st::app
