@@ -38,4 +38,16 @@ void saveLayoutPrefs(const std::filesystem::path& file, const ui::LayoutPrefs& p
     }
 }
 
+void writeLayoutReport(const std::filesystem::path& file, const ui::ItemRects& rects, ImVec2 display,
+                       ImVec2 scenePos, ImVec2 sceneSize) {
+    auto box = [](ImVec2 pos, ImVec2 size) { return nlohmann::json::array({pos.x, pos.y, size.x, size.y}); };
+    nlohmann::json j{{"display", {display.x, display.y}}, {"scene", box(scenePos, sceneSize)}};
+    j["windows"] = nlohmann::json::object();
+    for (const auto& [key, r] : rects)
+        if (key.rfind("window.", 0) == 0) j["windows"][key.substr(7)] = box(r.min, {r.max.x - r.min.x, r.max.y - r.min.y});
+        else j["items"][key] = box(r.min, {r.max.x - r.min.x, r.max.y - r.min.y});  // where a script clicks
+    writeTextAtomic(file, j.dump(2) + "\n");
+    std::printf("wrote %s\n", file.string().c_str());
+}
+
 }  // namespace st::app

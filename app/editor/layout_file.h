@@ -1,7 +1,10 @@
 #pragma once
 // The editor's panel layout (column widths, hidden panels) in <config dir>/layout.json: the
 // editor's own file, kept across runs, never part of a preset.
+#include "ui/item_rects.h"
 #include "ui/layout.h"
+
+#include <imgui.h>
 
 #include <filesystem>
 
@@ -12,5 +15,10 @@ namespace st::app {
 ui::LayoutPrefs loadLayoutPrefs(const std::filesystem::path& file);
 // Atomic; a failure is reported on stderr and otherwise ignored (it runs at exit).
 void saveLayoutPrefs(const std::filesystem::path& file, const ui::LayoutPrefs& prefs);
+
+// --layout-report: {"display": [w, h], "scene": [x, y, w, h], "windows": {"Settings": [x, y, w, h],
+// ...}, "items": {...}}, ImGui's display pixels from the top left, as the last frame placed them.
+void writeLayoutReport(const std::filesystem::path& file, const ui::ItemRects& rects, ImVec2 display,
+                       ImVec2 scenePos, ImVec2 sceneSize);
 
 }  // namespace st::app
