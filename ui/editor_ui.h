@@ -38,6 +38,19 @@ namespace st::ui {
 
 struct UiState;
 
+// View > Motion (issue 21 #3): what the menu shows of the app's motion state, and what it asks.
+struct MotionView {
+    bool fullQuality = false;     // Full quality while moving is on
+    bool previewOn = false;       // Preview path is rendering or playing
+    bool flickerOverlay = false;  // its per-pixel flicker map is shown
+};
+struct MotionRequests {
+    bool toggleFullQuality = false;
+    bool previewStart = false;
+    bool previewStop = false;
+    bool toggleFlickerOverlay = false;
+};
+
 // What the app shows the UI this frame. Nothing here is written back.
 struct UiInputs {
     const FrameStats* stats = nullptr;       // the last rendered frame's figures; nullptr: none yet
@@ -66,6 +79,7 @@ struct UiInputs {
     AbView ab;                               // the A half of the split view (while it is on)
     const SweepView* sweep = nullptr;        // the Sweep panel's run; nullptr: none yet
     std::vector<std::string> sweepableFields;  // field paths a sweep may vary (sweep::isSweepable)
+    MotionView motion;
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -96,6 +110,7 @@ struct UiRequests {
     float abDivider = 0.5f;                  // the divider, as a fraction of the window's width
     std::optional<SweepRequest> sweepStart;  // Run pressed in the Sweep panel, with valid axes
     bool sweepCancel = false;                // Cancel pressed
+    MotionRequests motion;                   // View > Motion's items
 };
 
 // Native key codes the platform backend writes into io.KeysDown. ImGui 1.86 names only a few keys

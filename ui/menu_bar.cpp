@@ -46,6 +46,19 @@ void debugViewItems(UiFrame& f) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: the debug view is not written into the preset and is no undo step.");
 }
 
+// Judging shimmer at full quality (issue 21 #3): the app renders and plays; the menu asks.
+void motionItems(UiFrame& f) {
+    const MotionView& m = f.in.motion;
+    if (ImGui::MenuItem("Full quality while moving", nullptr, m.fullQuality)) f.req.motion.toggleFullQuality = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("On: a moving view renders at full size with the preset's maps (slow on this machine).");
+    if (ImGui::MenuItem("Preview path", nullptr, false, !m.previewOn)) f.req.motion.previewStart = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Renders the preset's camera path (or your last camera move) at full quality, then plays it in a loop.");
+    if (ImGui::MenuItem("Stop preview", nullptr, false, m.previewOn)) f.req.motion.previewStop = true;
+    if (ImGui::MenuItem("Flicker overlay", nullptr, m.flickerOverlay, m.previewOn)) f.req.motion.toggleFlickerOverlay = true;
+}
+
 void viewMenu(UiFrame& f) {
     const bool open = ImGui::BeginMenu("View");
     recordItem(f.state.rects, "menu.view");
@@ -54,6 +67,8 @@ void viewMenu(UiFrame& f) {
     if (ImGui::MenuItem("Swap side view", "Tab")) f.req.swapSideView = true;
     ImGui::Separator();
     debugViewItems(f);
+    ImGui::Separator();
+    motionItems(f);
     ImGui::Separator();
     ImGui::MenuItem("Hide panels", "H", &f.state.prefs.panelsHidden);
     recordItem(f.state.rects, "menu.hidePanels");

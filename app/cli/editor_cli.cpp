@@ -21,6 +21,8 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     editor->add_option("--orbit", opt->orbitDegPerFrame,
                        "DEG: turn the camera around its target by DEG degrees every frame (a scripted moving-camera benchmark)")
         ->check(CLI::Range(-45.0f, 45.0f));
+    editor->add_flag("--preview-path", opt->previewPath,
+                     "Start View > Preview path on the first frame; with --frames, keep drawing until it plays, then print its line");
     editor->add_option("--layout-report", opt->layoutReport,
                        "Write the scene viewport's and the panels' and widgets' rectangles (JSON) after the last frame");
     editor->add_option("--status-file", opt->statusFile,

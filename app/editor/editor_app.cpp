@@ -38,9 +38,9 @@ void runFrames(EditorWindow& window, EditorSession& session, const EditorOptions
         // The figures reach the panel the frame after the job ends, and ImGui sizes a new table's
         // columns over its first frames: the screenshot waits a few frames more.
         finishedFrames = session.accuracy().finished() ? finishedFrames + 1 : 0;
-        const bool waiting = opt.waitAccuracy && finishedFrames < 4;
+        const bool waiting = (opt.waitAccuracy && finishedFrames < 4) || session.previewPending();
         if (waiting && std::chrono::steady_clock::now() - start > kAccuracyTimeout)
-            throw std::runtime_error("the Accuracy panel's job did not end within 10 minutes");
+            throw std::runtime_error("the Accuracy panel's job or the path preview did not end within 10 minutes");
         const bool last = opt.frames > 0 && frame + 1 >= opt.frames && !waiting;
         session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr, last);
         if (last || session.quitRequested()) break;
@@ -58,6 +58,7 @@ int runSession(const EditorOptions& opt, std::chrono::steady_clock::time_point& 
     EditorSession session(window, opt);
     runFrames(window, session, opt);
     if (opt.waitAccuracy) std::printf("%s\n", session.accuracy().summary().c_str());
+    if (opt.previewPath) std::printf("%s\n", session.previewLine().c_str());
     if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
     if (opt.saveAs) session.saveAs(*opt.saveAs);
     if (opt.layoutReport) session.writeLayoutReport(*opt.layoutReport);

@@ -20,6 +20,7 @@ struct EditorOptions {
     // shown}. What tests and the idle
     // benchmark watch.
     std::optional<std::filesystem::path> statusFile;
+    bool previewPath = false;   // View > Preview path on the first frame; with frames, run until it plays
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures
     bool debugContext = false;
 };

@@ -101,6 +101,8 @@ void EditorModel::applyCamera(const CameraInput& in) {
         const glm::vec3 d = settings_.camera.position - settings_.camera.target;
         settings_.camera.position = settings_.camera.target + glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z);
     }
+    recorded_.frame(settings_.camera);
+    if (settings_.camera != before) preview_.stop();  // the view moved: the loop shows another
     // The camera moves in this frame's image: the render comes before the panels' requests.
     // A camera the math rejects (or other settings it rejects) waits for apply() as any edit does.
     if (settings_.camera != before) {
@@ -141,17 +143,35 @@ void EditorModel::apply(const ui::UiRequests& r) {
     a_ = r.abSettings ? std::optional<Settings>(*r.abSettings) : std::nullopt;
     split_ = r.abSplit && a_;
     divider_ = r.abDivider;
+    applyMotion(r.motion, r.change != ChangeClass::None || r.frameScene || r.swapSideView);
     if (r.sweepCancel) sweep_->cancel();
     if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, sceneBase());
     if (const SceneOptions options{.ground = valid_.ground}; st::sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
 }
 
+// View > Motion. A change to the settings or the view stops a preview: its frames show others.
+void EditorModel::applyMotion(const ui::MotionRequests& m, bool changed) {
+    if (changed) previewMessage_.clear();
+    if (m.toggleFullQuality) fullQualityWhileMoving_ = !fullQualityWhileMoving_;
+    if (m.previewStop || (changed && preview_.active())) preview_.stop();
+    if (m.toggleFlickerOverlay) preview_.toggleOverlay();
+    if (m.previewStart) startPreview();
+}
+
+void EditorModel::startPreview() {
+    previewMessage_.clear();
+    std::string source;
+    if (std::optional<Settings> path = previewPath(valid_, recorded_.poses(), source)) preview_.start(std::move(*path), source);
+    else previewMessage_ = "Preview path: the preset has no camera path and the camera has not moved yet";
+}
+
 void EditorModel::setRenderMessage(std::string message) { renderMessage_ = std::move(message); }
 
 std::string EditorModel::message() const {
     std::string all;
-    for (const std::string* m : {&renderMessage_, &sceneMessage_, &settingsMessage_, &actionMessage_})
+    const std::string preview = preview_.line();
+    for (const std::string* m : {&renderMessage_, &sceneMessage_, &settingsMessage_, &actionMessage_, &previewMessage_, &preview})
         if (!m->empty()) all += (all.empty() ? "" : "\n") + *m;
     return all;
 }

@@ -9,6 +9,7 @@
 // a valid settings change, a scene that loads, the render that works again.
 #include "app/editor/editor_sweep.h"
 #include "app/editor/fly_camera.h"
+#include "app/editor/motion_preview.h"
 #include "app/editor/view_actions.h"
 #include "renderer/render/side_view.h"
 #include "renderer/scene/scene.h"
@@ -92,6 +93,13 @@ public:
     ui::EditorUi& ui() { return *ui_; }
     const ui::EditorUi& ui() const { return *ui_; }
     bool orbiting() const { return orbiting_; }
+    // View > Full quality while moving: no interactive scale or smaller maps while the view moves.
+    bool fullQualityWhileMoving() const { return fullQualityWhileMoving_; }
+    MotionPreview& preview() { return preview_; }
+    const MotionPreview& preview() const { return preview_; }
+    const CameraPathRecorder& recordedMove() const { return recorded_; }
+    void startPreview();  // View > Preview path
+    ui::MotionView motionView() const { return {fullQualityWhileMoving_, preview_.active(), preview_.overlay()}; }
     void savePresetAs(const std::filesystem::path& file, int width, int height);  // the valid settings
 
 private:
@@ -128,6 +136,11 @@ private:
     std::string settingsMessage_;  // the edited settings are invalid: until a valid change
     std::string actionMessage_;    // Frame scene's note: until the next settings change
     std::vector<std::filesystem::path> presetFiles_;
+    bool fullQualityWhileMoving_ = false;
+    MotionPreview preview_;
+    CameraPathRecorder recorded_;  // the user's last camera move, for Preview path
+    std::string previewMessage_;   // why a preview did not start: until the next request
+    void applyMotion(const ui::MotionRequests& m, bool changed);
     std::unique_ptr<EditorSweep> sweep_;
     std::vector<std::string> sweepable_;  // sweep::isSweepable over the field table
 };

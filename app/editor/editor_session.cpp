@@ -70,6 +70,7 @@ void EditorSession::fillUiInputs(ui::UiInputs& in) const {
     };
     in.sweep = &model_->sweep().view();
     in.sweepableFields = model_->sweepableFields();
+    in.motion = model_->motionView();
 }
 
 void EditorSession::frame(const fs::path* screenshot, bool final) {
@@ -89,6 +90,7 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
         model_->requestQuit();
     }
     model_->applyCamera(cameraInput());  // input -> model
+    if (opt_.previewPath && times_.frames() == 1) model_->startPreview();  // scripted: once the panels are placed
     model_->poll();
     SceneRender scene = viewport_->frame(*model_, viewportFrame(final));  // render
     ui::UiInputs in;
@@ -127,7 +129,7 @@ void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRe
     for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k)
         keyDown |= io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER);
     const bool buttonDown = std::find(std::begin(io.MouseDown), std::end(io.MouseDown), true) != std::end(io.MouseDown);
-    activity_.animating = keyDown || buttonDown || opt_.orbitDegPerFrame != 0.0f;
+    activity_.animating = keyDown || buttonDown || opt_.orbitDegPerFrame != 0.0f || model_->preview().active();
     activity_.jobRunning = viewport_->jobRunning(*model_) || model_->sweep().running();
 }
 

@@ -37,6 +37,11 @@ public:
     int framesDrawn() const { return times_.frames(); }
     const CameraSettings& camera() const { return model_->settings().camera; }
     bool splitShown() const { return model_->splitShown(); }
+    // --preview-path: the preview has not started yet (it starts on the second frame) or still renders.
+    bool previewPending() const {
+        return opt_.previewPath && (times_.frames() < 2 || model_->preview().state() == MotionPreview::State::Rendering);
+    }
+    std::string previewLine() const { return model_->preview().line(); }
 
 private:
     CameraInput cameraInput() const;

@@ -32,6 +32,7 @@ SceneRender ViewportRenderer::frame(EditorModel& model, const ViewportFrame& f) 
     placeScene(model, f);
     SceneRender out;
     if (sceneWidth_ < 16 || sceneHeight_ < 16) return out;
+    if (preview(model, f, out)) return out;
     const bool rendered = renderScene(model, f, out);
     updateAccuracy(model, f, rendered);
     updateProbe(model, f, rendered);
@@ -110,7 +111,7 @@ bool ViewportRenderer::renderScene(EditorModel& model, const ViewportFrame& f, S
     const bool splitShown = model.splitShown();
     const bool aFiguresPending = splitShown && (!accuracyA_ || accuracyA_->busy());
     const bool scalable = !f.final && !splitShown;
-    const bool interactive = moving && scalable;
+    const bool interactive = moving && scalable && !model.fullQualityWhileMoving();
     const double scale = interactive_.update(interactive, f.lastFrameMs);
     const int width = interactive ? scaledSize(sceneWidth_, scale) : sceneWidth_;
     const int height = interactive ? scaledSize(sceneHeight_, scale) : sceneHeight_;
@@ -199,6 +200,65 @@ void ViewportRenderer::present(const EditorModel& model) {
     blitColor(renderer_->framebuffer(), {0, 0, renderer_->width(), renderer_->height()}, 0,
               {sceneX_, sceneY_, sceneWidth_, sceneHeight_}, full ? BlitFilter::Nearest : BlitFilter::Linear);
     if (model.splitShown() && abStats_) ab_.composite(0, model.divider(), sceneX_, sceneY_);
+}
+
+bool ViewportRenderer::preview(EditorModel& model, const ViewportFrame& f, SceneRender& out) {
+    MotionPreview& p = model.preview();
+    if (p.generation() != previewGeneration_) {  // started, or stopped: the renderer held path frames
+        previewGeneration_ = p.generation();
+        previewRender_.reset();
+        shownFrame_ = -1;
+        frameCache_.invalidate();
+        previousValid_.reset();
+    }
+    if (!p.active()) return false;
+    if (!previewRender_) {
+        previewRender_ = std::make_unique<PathPreviewRender>();
+        previewWidth_ = sceneWidth_, previewHeight_ = sceneHeight_;
+    }
+    Settings path = p.path();
+    path.output.width = previewWidth_;
+    path.output.height = previewHeight_;
+    if (p.state() == MotionPreview::State::Rendering) {
+        // A chunk of frames a frame, so the panels stay responsive and show the progress.
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto elapsedMs = [&] { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); };
+        try {
+            do {
+                previewRender_->renderNext(*renderer_, path);
+                p.frameRendered();
+            } while (p.state() == MotionPreview::State::Rendering && elapsedMs() < 150.0);
+        } catch (const std::exception& e) {  // settings the math rejects on some path frame
+            model.setRenderMessage(std::string("Preview path: ") + e.what());
+            p.stop();
+            return false;
+        }
+        finishDeviceWork();
+        if (p.state() == MotionPreview::State::Playing) {
+            p.flickerMeasured(previewRender_->flicker()->flipRate);
+            playStart_ = f.time;
+        }
+        out = {true, elapsedMs(), 1.0};
+    } else {
+        out.reused = true;
+    }
+    present(model);  // while rendering: the frame just rendered
+    if (p.state() == MotionPreview::State::Playing) drawPreview(model, f);
+    return true;
+}
+
+// The loop's frame of this moment, or the flicker map, over the scene viewport.
+void ViewportRenderer::drawPreview(const EditorModel& model, const ViewportFrame& f) {
+    const MotionPreview& p = model.preview();
+    const int frame = p.overlay() ? -2 : p.frameAt(f.time - playStart_);
+    if (frame != shownFrame_) {
+        const Rgba8Image& img = frame == -2 ? previewRender_->flickerMap() : previewRender_->frames()[std::size_t(frame)];
+        previewTexture_.upload(img.width, img.height, img.pixels);
+        shownFrame_ = frame;
+    }
+    const ImVec2 pos = model.scenePos(), size = model.sceneSize();
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(std::uintptr_t(previewTexture_.id())), pos,
+                                             {pos.x + size.x, pos.y + size.y});
 }
 
 void ViewportRenderer::fillUiInputs(ui::UiInputs& in, const EditorModel& model) const {

@@ -7,9 +7,11 @@
 #include "app/editor/ab_split_render.h"
 #include "app/editor/editor_accuracy.h"
 #include "app/editor/editor_model.h"
+#include "app/editor/path_preview_render.h"
 #include "app/editor/scene_frame.h"
 #include "app/editor/scene_probe.h"
 #include "metrics/cost_model.h"
+#include "renderer/render/image_texture.h"
 #include "renderer/render/offscreen_target.h"
 #include "renderer/render/renderer.h"
 #include "renderer/render/shadow_map_view.h"
@@ -78,6 +80,10 @@ private:
     void updateAccuracy(const EditorModel& model, const ViewportFrame& f, bool rendered);
     void updateProbe(const EditorModel& model, const ViewportFrame& f, bool rendered);
     void present(const EditorModel& model);
+    // Preview path: a chunk of its frames rendered, or the loop shown. true while a preview is
+    // on: the live image, the Accuracy jobs and the probe wait (the renderer holds path frames).
+    bool preview(EditorModel& model, const ViewportFrame& f, SceneRender& out);
+    void drawPreview(const EditorModel& model, const ViewportFrame& f);
     void modelCost(FrameStats& stats) const;
 
     std::unique_ptr<Renderer> renderer_;
@@ -105,6 +111,12 @@ private:
     AbSplitRender ab_;
     std::optional<FrameStats> abStats_;  // A's last frame while the split is on
     bool abRendered_ = false;            // A's settings rendered on the held frame
+    std::uint64_t previewGeneration_ = 0;  // the model's preview the frames belong to
+    std::unique_ptr<PathPreviewRender> previewRender_;
+    int previewWidth_ = 0, previewHeight_ = 0;  // the frames' size: the viewport's when it began
+    double playStart_ = 0.0;
+    ImageTexture previewTexture_;
+    int shownFrame_ = -1;  // the frame in previewTexture_ (-2: the flicker map)
     // Models each rendered frame's cost (FrameStats::modelMs) for the A/B labels: the shipped profile.
     metrics::CostProfile costProfile_;
 };

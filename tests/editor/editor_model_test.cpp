@@ -176,5 +176,104 @@ TEST(EditorModelTest, MessagesGoWithTheChangeThatMadeThemStale) {
     EXPECT_EQ(model.message(), "");
 }
 
+TEST(EditorModelTest, FullQualityWhileMovingIsAToggle) {
+    EditorModel model(yardOptions());
+    EXPECT_FALSE(model.fullQualityWhileMoving());
+    ui::UiRequests r = quietFrame();
+    r.motion.toggleFullQuality = true;
+    model.apply(r);
+    EXPECT_TRUE(model.fullQualityWhileMoving());
+    EXPECT_TRUE(model.motionView().fullQuality);
+    model.apply(quietFrame());  // stays until toggled again
+    EXPECT_TRUE(model.fullQualityWhileMoving());
+    model.apply(r);
+    EXPECT_FALSE(model.fullQualityWhileMoving());
+}
+
+TEST(EditorModelTest, PreviewPathRendersThePresetsPathThenPlaysUntilTheViewMoves) {
+    EditorModel model(yardOptions());
+    const int frames = model.valid().path.frames;
+    ASSERT_GT(frames, 1) << "default.json has a camera path";
+    ui::UiRequests r = quietFrame();
+    r.motion.previewStart = true;
+    model.apply(r);
+    const MotionPreview& p = model.preview();
+    ASSERT_EQ(p.state(), MotionPreview::State::Rendering);
+    EXPECT_EQ(p.frames(), frames);
+    EXPECT_EQ(p.path().camera, model.valid().camera) << "the editor's camera observes the flicker";
+    EXPECT_NE(model.message().find("rendering 0 of " + std::to_string(frames)), std::string::npos) << model.message();
+    for (int i = 0; i + 1 < frames; ++i) model.preview().frameRendered();
+    EXPECT_EQ(p.state(), MotionPreview::State::Rendering);
+    EXPECT_NE(model.message().find("rendering " + std::to_string(frames - 1) + " of"), std::string::npos);
+    model.preview().frameRendered();
+    ASSERT_EQ(p.state(), MotionPreview::State::Playing);
+    model.preview().flickerMeasured(0.0041);
+    EXPECT_NE(model.message().find("playing, flicker F 0.410 %"), std::string::npos) << model.message();
+    // The loop: kPlayFps frames a second, back to 0 after the last.
+    EXPECT_EQ(p.frameAt(0.0), 0);
+    EXPECT_EQ(p.frameAt(2.5 / MotionPreview::kPlayFps), 2);
+    EXPECT_EQ(p.frameAt((frames + 1.5) / MotionPreview::kPlayFps), 1);
+    ui::UiRequests overlay = quietFrame();
+    overlay.motion.toggleFlickerOverlay = true;
+    model.apply(overlay);
+    EXPECT_TRUE(model.motionView().flickerOverlay);
+    EXPECT_TRUE(model.motionView().previewOn);
+
+    CameraInput look{.overScene = true};  // the view moves: the loop shows another, it stops
+    look.fly.look = true;
+    look.fly.dt = 1.0f / 60.0f;
+    look.mouseDelta = look.fly.mouseDelta = {8.0f, 0.0f};
+    model.applyCamera(look);
+    EXPECT_EQ(p.state(), MotionPreview::State::Off);
+    EXPECT_EQ(model.message().find("Preview path"), std::string::npos) << model.message();
+}
+
+TEST(EditorModelTest, WithoutAPresetPathThePreviewPlaysTheLastCameraMove) {
+    EditorModel model(yardOptions());
+    model.edit().path = {};
+    model.apply(quietFrame());
+    ui::UiRequests start = quietFrame();
+    start.motion.previewStart = true;
+    model.apply(start);
+    EXPECT_FALSE(model.preview().active());
+    EXPECT_NE(model.message().find("has not moved yet"), std::string::npos) << model.message();
+
+    CameraInput look{.overScene = true};
+    look.fly.look = true;
+    look.fly.dt = 1.0f / 60.0f;
+    look.mouseDelta = look.fly.mouseDelta = {6.0f, 0.0f};
+    model.applyCamera(CameraInput{.overScene = true});  // still: the recorder's first pose
+    for (int i = 0; i < 5; ++i) model.applyCamera(look);
+    const CameraSettings end = model.settings().camera;
+    model.applyCamera(CameraInput{.overScene = true});  // released
+    ASSERT_EQ(model.recordedMove().poses().size(), 5u);
+    EXPECT_EQ(model.recordedMove().poses().back().target, end.target);
+    model.apply(start);
+    ASSERT_EQ(model.preview().state(), MotionPreview::State::Rendering);
+    EXPECT_EQ(model.preview().frames(), 5);
+    EXPECT_EQ(model.preview().path().path.keyframes.size(), 5u);
+    EXPECT_NE(model.message().find("your last camera move"), std::string::npos) << model.message();
+    ui::UiRequests stop = quietFrame();
+    stop.motion.previewStop = true;
+    model.apply(stop);
+    EXPECT_FALSE(model.preview().active());
+}
+
+TEST(CameraPathRecorderTest, ANewMoveReplacesTheLastAndALongOneIsThinned) {
+    CameraPathRecorder rec;
+    CameraSettings c;
+    rec.frame(c);
+    for (int i = 1; i <= 3; ++i) c.position.x = float(i), rec.frame(c);
+    rec.frame(c);  // still
+    ASSERT_EQ(rec.poses().size(), 3u);
+    EXPECT_EQ(rec.poses().front().position.x, 1.0f);
+    for (int i = 1; i <= 200; ++i) c.position.z = float(i), rec.frame(c);
+    EXPECT_LE(rec.poses().size(), CameraPathRecorder::kMaxPoses);
+    EXPECT_GE(rec.poses().size(), CameraPathRecorder::kMaxPoses / 2);
+    EXPECT_EQ(rec.poses().front().position.z, 1.0f) << "the new move from its start";
+    for (std::size_t i = 1; i < rec.poses().size(); ++i)
+        EXPECT_GT(rec.poses()[i].position.z, rec.poses()[i - 1].position.z) << "in order";
+}
+
 }  // namespace
 }  // namespace st::app
