@@ -84,11 +84,6 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     const unsigned long events = window_.eventCount();
     bool newEvents = events != lastEvents_ || window_.inputQueued();
     lastEvents_ = events;
-    if (window_.shouldClose()) {  // the close button asks the panels first (unsaved changes)
-        newEvents = true;  // Ctrl+C is no GLFW event: the frames that answer it must follow
-        window_.cancelClose();
-        model_->requestQuit();
-    }
     model_->applyCamera(cameraInput());  // input -> model
     if (opt_.previewPath && times_.frames() == 1) model_->startPreview();  // scripted: once the panels are placed
     model_->poll();
@@ -97,6 +92,13 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     fillUiInputs(in);
     const ui::UiRequests requests = model_->drawPanels(in);  // UI
     model_->apply(requests);                                 // requests -> model
+    // The close button or Ctrl+C asks the panels (unsaved changes) once the input queued before it
+    // has landed and been drawn: a Save clicked just before Ctrl+C is saved, not asked about.
+    if (window_.shouldClose() && !window_.inputQueued()) {
+        newEvents = true;  // Ctrl+C is no GLFW event: the frames that answer it must follow
+        window_.cancelClose();
+        model_->requestQuit();
+    }
     asked_.accuracyWanted = requests.accuracyWanted, asked_.errorOverlay = requests.errorOverlay;
     asked_.probeWanted = requests.probeWanted, asked_.probePixel = requests.probePixel;
     // The first frame learns where the scene goes from the panels: it renders after them.
