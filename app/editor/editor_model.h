@@ -37,6 +37,7 @@ struct CameraInput {
     bool altClick = false;          // Alt + left button pressed this frame
     glm::vec3 pivot{0.0f};          // with altClick: the surface point under the cursor (or the target)
     float scriptedOrbitDeg = 0.0f;  // --orbit-deg-per-frame: a benchmark's turn, no undo step
+    double seconds = 0.0;           // the frame's time (the recorded move's pauses)
 };
 
 struct ModelOptions {

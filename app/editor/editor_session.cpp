@@ -47,6 +47,7 @@ CameraInput EditorSession::cameraInput() const {
     if (in.altClick && !model_->swapped())  // the orbit's pivot: the surface under the cursor
         in.pivot = viewport_->pickedPoint(io.MousePos, model_->scenePos(), io.DisplayFramebufferScale, target);
     in.scriptedOrbitDeg = opt_.orbitDegPerFrame;
+    in.seconds = glfwGetTime();
     return in;
 }
 

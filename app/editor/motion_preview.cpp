@@ -6,18 +6,15 @@
 
 namespace st::app {
 
-void CameraPathRecorder::frame(const CameraSettings& camera) {
+void CameraPathRecorder::frame(const CameraSettings& camera, double seconds) {
     const bool moved = last_ && !(*last_ == camera);
     last_ = camera;
-    if (!moved) {
-        moving_ = false;
-        return;
-    }
-    if (!moving_) {  // a new move replaces the last one
+    if (!moved) return;
+    if (!lastMove_ || seconds - *lastMove_ > kPauseSeconds) {  // a new move replaces the last one
         poses_.clear();
         stride_ = 1, skipped_ = 0;
-        moving_ = true;
     }
+    lastMove_ = seconds;
     if (++skipped_ < stride_) return;
     skipped_ = 0;
     poses_.push_back({camera.position, camera.target, camera.fovY});

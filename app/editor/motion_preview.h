@@ -15,18 +15,20 @@
 
 namespace st::app {
 
-// The user's last camera move: the poses of the latest run of frames in which the camera moved,
+// The user's last camera move: the poses of the frames in which the camera moved, from the first
+// after a pause of kPauseSeconds (a frame or two without movement inside a drag is no pause),
 // thinned to at most kMaxPoses (every other pose dropped, and then every other frame recorded).
 class CameraPathRecorder {
 public:
     static constexpr std::size_t kMaxPoses = 48;
-    void frame(const CameraSettings& camera);  // once per editor frame
+    static constexpr double kPauseSeconds = 0.5;
+    void frame(const CameraSettings& camera, double seconds);  // once per editor frame, at its time
     const std::vector<CameraKeyframe>& poses() const { return poses_; }
 
 private:
     std::vector<CameraKeyframe> poses_;
     std::optional<CameraSettings> last_;
-    bool moving_ = false;
+    std::optional<double> lastMove_;  // when the camera last moved
     int stride_ = 1;   // record every stride-th moving frame
     int skipped_ = 0;  // moving frames since the last recorded one
 };

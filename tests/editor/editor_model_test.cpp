@@ -262,12 +262,16 @@ TEST(EditorModelTest, WithoutAPresetPathThePreviewPlaysTheLastCameraMove) {
 TEST(CameraPathRecorderTest, ANewMoveReplacesTheLastAndALongOneIsThinned) {
     CameraPathRecorder rec;
     CameraSettings c;
-    rec.frame(c);
-    for (int i = 1; i <= 3; ++i) c.position.x = float(i), rec.frame(c);
-    rec.frame(c);  // still
-    ASSERT_EQ(rec.poses().size(), 3u);
+    double t = 0.0;
+    const double frame = 0.1;
+    rec.frame(c, t);
+    for (int i = 1; i <= 3; ++i) c.position.x = float(i), rec.frame(c, t += frame);
+    rec.frame(c, t += frame);  // a frame without movement inside the drag: the same move
+    c.position.x = 4.0f, rec.frame(c, t += frame);
+    ASSERT_EQ(rec.poses().size(), 4u);
     EXPECT_EQ(rec.poses().front().position.x, 1.0f);
-    for (int i = 1; i <= 200; ++i) c.position.z = float(i), rec.frame(c);
+    t += CameraPathRecorder::kPauseSeconds;  // a pause: the next move replaces this one
+    for (int i = 1; i <= 200; ++i) c.position.z = float(i), rec.frame(c, t += frame);
     EXPECT_LE(rec.poses().size(), CameraPathRecorder::kMaxPoses);
     EXPECT_GE(rec.poses().size(), CameraPathRecorder::kMaxPoses / 2);
     EXPECT_EQ(rec.poses().front().position.z, 1.0f) << "the new move from its start";
