@@ -101,7 +101,7 @@ void EditorModel::applyCamera(const CameraInput& in) {
         const glm::vec3 d = settings_.camera.position - settings_.camera.target;
         settings_.camera.position = settings_.camera.target + glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z);
     }
-    recorded_.frame(settings_.camera, in.seconds);
+    recorded_.frame(settings_.camera, in.seconds, in.fly.look || in.fly.pan || orbiting_);
     if (settings_.camera != before) preview_.stop();  // the view moved: the loop shows another
     // The camera moves in this frame's image: the render comes before the panels' requests.
     // A camera the math rejects (or other settings it rejects) waits for apply() as any edit does.

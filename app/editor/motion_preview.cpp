@@ -6,11 +6,17 @@
 
 namespace st::app {
 
-void CameraPathRecorder::frame(const CameraSettings& camera, double seconds) {
+void CameraPathRecorder::frame(const CameraSettings& camera, double seconds, bool held) {
     const bool moved = last_ && !(*last_ == camera);
     last_ = camera;
-    if (!moved) return;
-    if (!lastMove_ || seconds - *lastMove_ > kPauseSeconds) {  // a new move replaces the last one
+    if (!moved) {
+        dragging_ = dragging_ && held;
+        return;
+    }
+    // The same drag however slow its frames (a full-quality frame may take a second here).
+    const bool sameDrag = dragging_ && held;
+    dragging_ = held;
+    if (!sameDrag && (!lastMove_ || seconds - *lastMove_ > kPauseSeconds)) {  // a new move replaces the last one
         poses_.clear();
         stride_ = 1, skipped_ = 0;
     }

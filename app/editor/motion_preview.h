@@ -16,19 +16,21 @@
 namespace st::app {
 
 // The user's last camera move: the poses of the frames in which the camera moved, from the first
-// after a pause of kPauseSeconds (a frame or two without movement inside a drag is no pause),
+// after a pause of kPauseSeconds outside a drag (a drag is one move, however slow its frames),
 // thinned to at most kMaxPoses (every other pose dropped, and then every other frame recorded).
 class CameraPathRecorder {
 public:
     static constexpr std::size_t kMaxPoses = 48;
-    static constexpr double kPauseSeconds = 0.5;
-    void frame(const CameraSettings& camera, double seconds);  // once per editor frame, at its time
+    static constexpr double kPauseSeconds = 1.0;
+    // Once per editor frame, at its time; `held`: a fly, pan or orbit drag's button is down.
+    void frame(const CameraSettings& camera, double seconds, bool held);
     const std::vector<CameraKeyframe>& poses() const { return poses_; }
 
 private:
     std::vector<CameraKeyframe> poses_;
     std::optional<CameraSettings> last_;
     std::optional<double> lastMove_;  // when the camera last moved
+    bool dragging_ = false;           // that move was a drag still held
     int stride_ = 1;   // record every stride-th moving frame
     int skipped_ = 0;  // moving frames since the last recorded one
 };

@@ -264,14 +264,17 @@ TEST(CameraPathRecorderTest, ANewMoveReplacesTheLastAndALongOneIsThinned) {
     CameraSettings c;
     double t = 0.0;
     const double frame = 0.1;
-    rec.frame(c, t);
-    for (int i = 1; i <= 3; ++i) c.position.x = float(i), rec.frame(c, t += frame);
-    rec.frame(c, t += frame);  // a frame without movement inside the drag: the same move
-    c.position.x = 4.0f, rec.frame(c, t += frame);
+    rec.frame(c, t, false);
+    for (int i = 1; i <= 3; ++i) c.position.x = float(i), rec.frame(c, t += frame, true);
+    rec.frame(c, t += frame, true);  // a frame without movement inside the drag: the same move
+    c.position.x = 4.0f, rec.frame(c, t += 3.0, true);  // and a slow frame of the same drag
     ASSERT_EQ(rec.poses().size(), 4u);
     EXPECT_EQ(rec.poses().front().position.x, 1.0f);
+    rec.frame(c, t += frame, false);  // released
+    c.position.x = 5.0f, rec.frame(c, t += frame, false);  // a key step right after: the same move
+    ASSERT_EQ(rec.poses().size(), 5u);
     t += CameraPathRecorder::kPauseSeconds;  // a pause: the next move replaces this one
-    for (int i = 1; i <= 200; ++i) c.position.z = float(i), rec.frame(c, t += frame);
+    for (int i = 1; i <= 200; ++i) c.position.z = float(i), rec.frame(c, t += frame, false);
     EXPECT_LE(rec.poses().size(), CameraPathRecorder::kMaxPoses);
     EXPECT_GE(rec.poses().size(), CameraPathRecorder::kMaxPoses / 2);
     EXPECT_EQ(rec.poses().front().position.z, 1.0f) << "the new move from its start";
