@@ -9,6 +9,7 @@
 #include "sweep/sweep_spec.h"
 #include "tune/tune_eval.h"
 #include "tune/tune_explain.h"
+#include "tune/tune_holdout.h"
 #include "tune/tune_journal.h"
 #include "tune/tune_views.h"
 
@@ -475,14 +476,21 @@ private:
             const Evaluation tu = judge(measured(best.settings, "held-out"), objective_);
             s["input"]["heldOut"] = evalJson(in);
             s["tuned"]["heldOut"] = evalJson(tu);
-            for (const auto& [name, r] : refs_) s["references"][name]["heldOut"] = evalJson(judge(measured(r, "held-out"), objective_));
-            // A tune that only fits the views it saw: on the held-out views it keeps less than half
-            // of the gain it made on the tuned ones, or is worse than the input.
-            const double gainTuned = inputEval.error - best.eval.error, gainHeld = in.error - tu.error;
-            const bool overfit = gainHeld < 0.5 * gainTuned || tu.error > in.error;
-            s["heldOutHolds"] = !overfit;
-            say(std::string(overfit ? "warning: the tune does not hold on the held-out views: " : "held-out views: ") +
-                errorText(opt_.objective, in.error) + " input -> " + errorText(opt_.objective, tu.error) + " tuned");
+            std::vector<HeldOutScore> refScores;
+            for (const auto& [name, r] : refs_) {
+                const Evaluation held = judge(measured(r, "held-out"), objective_);
+                s["references"][name]["heldOut"] = evalJson(held);
+                refScores.push_back({name, judge(measured(r, "tuned"), objective_).error, held.error});
+            }
+            const HeldOutVerdict v = heldOutVerdict({"input", inputEval.error, in.error}, refScores,
+                                                    {"tuned", best.eval.error, tu.error});
+            s["heldOutHolds"] = v.holds;
+            s["heldOutBaseline"] = v.baseline;
+            const Json& baseHeld = v.baseline == "input" ? s["input"]["heldOut"] : s["references"][v.baseline]["heldOut"];
+            say(std::string(v.holds ? "held-out views: " : "warning: the tune does not hold on the held-out views: ") +
+                errorText(opt_.objective, baseHeld["error"].get<double>()) + " " + v.baseline + " -> " +
+                errorText(opt_.objective, tu.error) + " tuned (on the tuned views " +
+                errorText(opt_.objective, best.eval.error + v.gainTuned) + " -> " + errorText(opt_.objective, best.eval.error) + ")");
         }
         const metrics::MeasureTimings& t = evaluator_->spent();
         const double n = std::max(1, evaluator_->measurements());
