@@ -42,6 +42,11 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "memory, unless --budget-ms/--budget-mib are given)")
         ->expected(1, -1)
         ->check(CLI::ExistingFile);
+    cmd->add_option("--compare-with", opt->compareWith,
+                    "Presets whose method is measured on the same views and drawn on the front, without setting the "
+                    "budget (the editor's A)")
+        ->expected(1, -1)
+        ->check(CLI::ExistingFile);
     cmd->add_option("--size", *size, "Tune at this output size, WxH, instead of the preset's");
     cmd->add_option("--objective", opt->objective,
                     "Error figure to minimise; the soft truth's artifact classes may not get worse than the input's")

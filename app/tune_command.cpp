@@ -60,6 +60,7 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.budgetMs = opt.budgetMs;
         to.budgetMiB = opt.budgetMiB;
         to.budgetFrom = opt.budgetFrom;
+        to.compareWith = opt.compareWith;
         to.size = opt.size;
         to.objective = opt.objective;
         to.views = opt.views;

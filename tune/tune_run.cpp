@@ -189,19 +189,23 @@ private:
         out.resumed = resumed_;
         out.stopped = result_.stopped;
         if (out.stopped) {
+            writeProgress("stopped", result_.evaluations, opt_.evaluations, &result_.evaluated);
             out.message = "stopped with " + std::to_string(journal_->size()) + " evaluations journaled in " +
                           (opt_.outDir / "evaluations.jsonl").string() + "; run the same command to resume";
             return out;
         }
         if (result_.best) simplify(*result_.best);
         if (!result_.best) {
+            writeProgress("infeasible", result_.evaluations, opt_.evaluations, &result_.evaluated);
             out.infeasible = true;
             out.message = "no point within the budget of " + budgetText(budget_) + " kept the artifact classes at the input's "
                           "level in " + std::to_string(result_.evaluations) + " evaluations";
             return out;
         }
         const Candidate& best = result_.evaluated[*result_.best];
+        writeProgress("explaining", result_.evaluations, opt_.evaluations, &result_.evaluated);
         writeOutputs(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        writeProgress("done", result_.evaluations, opt_.evaluations, &result_.evaluated);
         out.evaluations = made_;
         out.fromShards = fromShards_;
         if (!writes()) {
@@ -318,6 +322,10 @@ private:
             refs_.push_back({file.stem().string(), sweep::referenceOnBase(input_, ref, file.stem().string(), adapted)});
             for (const std::string& a : adapted) say("note: reference " + a);
         }
+        for (const fs::path& file : opt_.compareWith) {
+            std::vector<std::string> adapted;
+            compared_.push_back({file.stem().string(), sweep::referenceOnBase(input_, loadPreset(file), file.stem().string(), adapted)});
+        }
     }
 
     Json identity() const {
@@ -362,6 +370,48 @@ private:
             line += "nothing within the budget yet";
         }
         say(line + "; trying " + p.trying);
+        writeProgress("searching", p.evaluations, p.limit, p.evaluated);
+    }
+
+    Json pointJson(const Evaluation& e) const {
+        return {{"error", e.error}, {"costMs", e.costMs}, {"mapBytes", e.mapBytes}};
+    }
+
+    // progress.json: what a UI draws while the tune runs (docs/tuning.md#progress). Evaluations
+    // within the budget and the constraints are "feasible"; the input and the references are
+    // measured before the search starts, so they are there from the first write.
+    void writeProgress(const std::string& stage, int done, int limit, const std::vector<Candidate>* evaluated) {
+        if (!writes()) return;
+        Json refs = Json::object();
+        for (const auto* list : {&refs_, &compared_})
+            for (const auto& [name, r] : *list) {
+                Json j = pointJson(judge(measured(r, "tuned", list == &refs_), objective_));
+                j["budget"] = list == &refs_;
+                refs[name] = std::move(j);
+            }
+        Json points = Json::array();
+        std::optional<std::size_t> best;
+        if (evaluated)
+            for (std::size_t i = 0; i < evaluated->size(); ++i) {
+                const Candidate& c = (*evaluated)[i];
+                if (!c.eval.valid) continue;
+                Json j = pointJson(c.eval);
+                j["feasible"] = c.feasible;
+                points.push_back(std::move(j));
+                if (c.feasible && (!best || better(c, (*evaluated)[*best]))) best = i;
+            }
+        const Json progress = {{"version", kTuneVersion},
+                               {"stage", stage},
+                               {"evaluations", done},
+                               {"limit", limit},
+                               {"objective", opt_.objective},
+                               {"budgetMs", budget_.ms ? Json(*budget_.ms) : Json(nullptr)},
+                               {"budgetBytes", budget_.bytes ? Json(*budget_.bytes) : Json(nullptr)},
+                               {"input", pointJson(judge(measured(input_, "tuned"), objective_))},
+                               {"references", refs},
+                               {"best", best ? pointJson((*evaluated)[*best].eval) : Json(nullptr)},
+                               {"points", points}};
+        writeTextAtomic(opt_.outDir / "progress.json", progress.dump() + "\n");
     }
 
     Json evalJson(const Evaluation& e) const {
@@ -440,6 +490,7 @@ private:
         };
         add(input_, measured(input_, "tuned"), "input", true);
         for (const auto& [name, s] : refs_) add(s, measured(s, "tuned"), name, true);
+        for (const auto& [name, s] : compared_) add(s, measured(s, "tuned", false), name, true);
         // Labels stay short for the chart's front table: the moves that led to a point are in
         // evaluations.jsonl and explain.md.
         for (std::size_t i = 0; i < result_.evaluated.size(); ++i) {
@@ -471,6 +522,8 @@ private:
                   {"tuned", {{"tuned", evalJson(best.eval)}}},
                   {"references", Json::object()}};
         for (const auto& [name, r] : refs_) s["references"][name] = {{"tuned", evalJson(judge(measured(r, "tuned"), objective_))}};
+        if (!compared_.empty()) s["compared"] = Json::object();
+        for (const auto& [name, r] : compared_) s["compared"][name] = {{"tuned", evalJson(judge(measured(r, "tuned", false), objective_))}};
         if (heldOut) {
             const Evaluation in = judge(measured(input_, "held-out"), objective_);
             const Evaluation tu = judge(measured(best.settings, "held-out"), objective_);
@@ -511,6 +564,7 @@ private:
     fs::path presetDir_;
     std::vector<View> views_;
     std::vector<std::pair<std::string, Settings>> refs_;
+    std::vector<std::pair<std::string, Settings>> compared_;  // --compare-with: drawn, never a budget
     metrics::MeasureSession session_;
     std::optional<Journal> journal_;
     std::optional<ViewEvaluator> evaluator_;
