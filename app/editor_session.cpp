@@ -41,6 +41,7 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt)
     accuracy_ = std::make_unique<EditorAccuracy>();
     std::error_code ec;
     sweep_ = std::make_unique<EditorSweep>(fs::read_symlink("/proc/self/exe", ec));  // this binary's `sweep`
+    tune_ = std::make_unique<EditorTune>(fs::read_symlink("/proc/self/exe", ec));    // ... and its `tune`
     for (const FieldInfo& field : fieldTable())
         if (sweep::isSweepable(field)) sweepable_.emplace_back(field.path);
     scanPresets();
@@ -177,6 +178,8 @@ void EditorSession::applyRequests(const ui::UiRequests& r) {
     if (!split_) abStats_.reset();
     if (r.sweepCancel) sweep_->cancel();
     if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : folderOf(presetPath_));
+    if (r.tuneCancel) tune_->cancel();
+    if (r.tuneStart) tune_->start(*r.tuneStart, valid_, a_, presetPath_.empty() ? opt_.presetDir : folderOf(presetPath_));
 }
 
 // A's ground truth is read back here, while the renderer holds A's maps (the live frame comes
@@ -364,6 +367,8 @@ ui::UiInputs EditorSession::uiInputs() {
     if (accuracyA_) in.ab.accuracy = accuracyA_->view();
     in.sweep = &sweep_->view();
     in.sweepableFields = sweepable_;
+    in.tune = &tune_->view();
+    in.tuneObjectives = tuneObjectives_;
     return in;
 }
 
@@ -409,6 +414,7 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     }
     handleInput();
     sweep_->poll();
+    tune_->poll();
     const ui::UiRequests requests = ui_->draw(settings_, uiInputs());
     applyRequests(requests);
     if (const SceneOptions options{.ground = valid_.ground}; sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
@@ -440,7 +446,8 @@ std::string EditorSession::shownState() const {
     const ui::SweepView& sweep = sweep_->view();
     return status_ + '\n' + ui_->windowTitle() + '\n' + accuracyState(*accuracy_) + '\n' +
            (accuracyA_ ? accuracyState(*accuracyA_) : "") + '\n' + std::to_string(int(sweep.state)) + ' ' +
-           std::to_string(sweep.done) + ' ' + std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size());
+           std::to_string(sweep.done) + ' ' + std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size()) +
+           ' ' + std::to_string(int(tune_->view().state)) + ' ' + std::to_string(tune_->view().chart.points.size());
 }
 
 void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRequests& r) {
@@ -456,7 +463,8 @@ void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRe
         keyDown |= io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER);
     const bool buttonDown = std::find(std::begin(io.MouseDown), std::end(io.MouseDown), true) != std::end(io.MouseDown);
     activity_.animating = keyDown || buttonDown || opt_.orbitDegPerFrame != 0.0f;
-    activity_.jobRunning = accuracy_->busy() || (split_ && accuracyA_ && accuracyA_->busy()) || sweep_->running();
+    activity_.jobRunning = accuracy_->busy() || (split_ && accuracyA_ && accuracyA_->busy()) || sweep_->running() ||
+                          tune_->running();
 }
 
 void EditorSession::writeSceneShot(const fs::path& file) const {

@@ -6,6 +6,7 @@
 #include "app/editor_accuracy.h"
 #include "app/editor_app.h"
 #include "app/editor_sweep.h"
+#include "app/editor_tune.h"
 #include "app/editor_window.h"
 #include "app/fly_camera.h"
 #include "app/frame_pacer.h"
@@ -141,6 +142,8 @@ private:
     bool abRendered_ = false;                    // A's settings rendered on the held frame
     std::unique_ptr<EditorAccuracy> accuracyA_;  // A's own ground-truth job
     std::unique_ptr<EditorSweep> sweep_;
+    std::unique_ptr<EditorTune> tune_;
+    std::vector<std::pair<std::string, std::string>> tuneObjectives_ = tuneObjectives();
     std::vector<std::string> sweepable_;         // sweep::isSweepable over the field table
     FrameActivity activity_;
     unsigned long lastEvents_ = 0;  // EditorWindow::eventCount() at the previous frame

@@ -24,6 +24,7 @@
 #include "ui/probe.h"
 #include "ui/split_bar.h"
 #include "ui/status_bar.h"
+#include "ui/tune_view.h"
 
 #include <imgui.h>
 
@@ -66,6 +67,8 @@ struct UiInputs {
     AbView ab;                               // the A half of the split view (while it is on)
     const SweepView* sweep = nullptr;        // the Sweep panel's run; nullptr: none yet
     std::vector<std::string> sweepableFields;  // field paths a sweep may vary (sweep::isSweepable)
+    const TuneView* tune = nullptr;          // the Tune panel's run; nullptr: none yet
+    std::vector<std::pair<std::string, std::string>> tuneObjectives;  // `tune --objective` choices: name, label
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -96,6 +99,8 @@ struct UiRequests {
     float abDivider = 0.5f;                  // the divider, as a fraction of the window's width
     std::optional<SweepRequest> sweepStart;  // Run pressed in the Sweep panel, with valid axes
     bool sweepCancel = false;                // Cancel pressed
+    std::optional<TuneRequest> tuneStart;    // Go pressed in the Tune panel, with valid fields
+    bool tuneCancel = false;                 // its Cancel pressed
 };
 
 // Native key codes the platform backend writes into io.KeysDown. ImGui 1.86 names only a few keys

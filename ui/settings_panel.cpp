@@ -75,7 +75,8 @@ void drawField(UiFrame& f, const FieldInfo& field) {
 // What a group shows after its fields: the sun toggle, the cascade figures.
 void drawGroupExtras(UiFrame& f, const std::string& key) {
     if (key == "light") drawSunAnimation(f);
-    if (key == "cascades") drawCascadeFigures(f.s, f.in.stats, f.state.rects);
+    if (key == "cascades")
+        if (const std::string rule = drawCascadeFigures(f.s, f.in.stats, f.state.rects); !rule.empty()) openTuneFor(f.state.tune, rule);
 }
 
 // The groups an artist tunes all day start open; output, measurement and new groups start closed.

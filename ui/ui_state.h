@@ -9,6 +9,7 @@
 #include "ui/field_widgets.h"
 #include "ui/history.h"
 #include "ui/layout.h"
+#include "ui/tune_state.h"
 #include "ui/map_cost.h"
 #include "ui/undo_stack.h"
 
@@ -67,6 +68,7 @@ struct UiState {
     LayoutPrefs prefs;                     // column widths, hidden panels: kept by the app across runs
     Layout layout;                         // this frame's panel and scene rectangles (beginFrame)
     CompareUiState compare;                // A/B split and Sweep panel (ab_split.cpp, sweep_panel.cpp)
+    TuneUiState tune;                      // the Tune panel (tune_panel.cpp)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused
