@@ -75,6 +75,9 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "Seconds to wait for another shard's measurement before measuring it here")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    cmd->add_flag("--shared-renderer", opt->sharedRenderer,
+                  "Measure every view with one renderer, redrawing every map at each change of view (the "
+                  "baseline scripts/bench_tune.sh compares with; the result is the same)");
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");
     cmd->callback([opt, budgetMs, budgetMiB, size, shard, ms, mib, &exitCode] {
         if (!shard->empty() && !parseShard(*shard, opt->shardIndex, opt->shardCount)) {

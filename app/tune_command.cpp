@@ -61,6 +61,7 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.budgetMiB = opt.budgetMiB;
         to.budgetFrom = opt.budgetFrom;
         to.compareWith = opt.compareWith;
+        to.rendererPerView = !opt.sharedRenderer;
         to.size = opt.size;
         to.objective = opt.objective;
         to.views = opt.views;

@@ -16,6 +16,7 @@ struct TuneCommandOptions {
     std::optional<double> budgetMs, budgetMiB;
     std::vector<std::filesystem::path> budgetFrom;
     std::vector<std::filesystem::path> compareWith;
+    bool sharedRenderer = false;
     std::string objective = "soft-filtered";
     int views = 4;
     int holdOutEvery = 4;

@@ -152,7 +152,9 @@ private:
     TuneOutcome tune(std::chrono::steady_clock::time_point t0) {
         evaluator_.emplace(session_, presetDir_, views_, *opt_.profile, Objective{opt_.objective, {}});
         evaluator_->setPathFlicker(input_.path.frames > 0);
+        evaluator_->setRendererPerView(opt_.rendererPerView);
         screener_.emplace(session_, presetDir_, std::vector<View>{views_.front()}, *opt_.profile, Objective{opt_.objective, {}});
+        screener_->setRendererPerView(opt_.rendererPerView);
         resolveBudget();
         TuneOutcome out;
         const Evaluation cheap = measured(cheapest(input_), "tuned");
@@ -552,7 +554,9 @@ private:
                        {"meanMsPerViewMeasurement", t.totalMs / n},
                        {"meanRenderAndReadBackMs", t.measurePassMs / n},
                        {"meanTruthMs", t.groundTruthMs / n},
-                       {"meanSoftTruthMs", t.softTruthMs / n}};
+                       {"meanSoftTruthMs", t.softTruthMs / n},
+                       {"mapsDrawn", evaluator_->mapsDrawn() + screener_->mapsDrawn()},
+                       {"mapsKept", evaluator_->mapsKept() + screener_->mapsKept()}};
         say("time: median " + fixed(metrics::median(evalMs_), 0) + " ms per evaluation (" + std::to_string(evalMs_.size()) +
             " measured; per view " + fixed(t.totalMs / n, 0) + " ms: render and read-back " + fixed(t.measurePassMs / n, 0) +
             ", truth " + fixed(t.groundTruthMs / n, 0) + ", soft truth " + fixed(t.softTruthMs / n, 0) + ")");

@@ -43,6 +43,9 @@ struct TuneOptions {
     // every round and waits for the others'. The first shard writes the outputs.
     Shard shard;
     double shardWaitSeconds = 600.0;  // then a silent shard's share is measured here
+    // Each view keeps its own renderer and maps (ViewEvaluator::setRendererPerView); false: the
+    // baseline that redraws every map at every change of view (scripts/bench_tune.sh's ratio).
+    bool rendererPerView = true;
 };
 
 struct TuneOutcome {
