@@ -3,7 +3,8 @@
 // Decision: the ImGui OpenGL3 backend keeps its own loader (Debian's libimgui.a is built with
 // it); the rest of shadowtune uses libepoxy. Both resolve the same driver entry points.
 // Window size and the ImGui layout (imgui.ini) persist in $XDG_CONFIG_HOME/shadowtune
-// (default ~/.config/shadowtune).
+// (default ~/.config/shadowtune). The window fits the primary monitor's work area: the first
+// launch fills it, a size kept from a larger screen shrinks to it.
 #include "app/key_queue.h"
 #include "app/mouse_queue.h"
 
