@@ -98,6 +98,29 @@ TEST_P(EditorLayoutAtSize, SceneViewportAndPanelsTileTheWindow) {
             for (auto other = windows.begin(); other != windows.end(); ++other)
                 if (other.key() != it.key()) EXPECT_FALSE(b.overlaps(boxOf(other.value()))) << it.key() << " / " << other.key();
         }
+        // Issue 21: at 1000x700 the status bar's line ran past the window's edge, and the probe's
+        // tooltip covered the Shadow maps panel.
+        const auto& items = report["items"];
+        ASSERT_TRUE(windows.contains("##status"));
+        const Box status = boxOf(windows["##status"]);
+        EXPECT_LE(status.x + status.w, float(c.w));
+        EXPECT_LE(status.y + status.h, float(c.h));
+        ASSERT_TRUE(items.contains("status.fps")) << items.dump();
+        for (auto it = items.begin(); it != items.end(); ++it) {
+            if (it.key().rfind("status.", 0) != 0) continue;
+            const Box b = boxOf(it.value());
+            EXPECT_LE(b.x + b.w, status.x + status.w) << it.key() << " runs past the status bar";
+            EXPECT_GE(b.y, status.y) << it.key();
+            EXPECT_LE(b.y + b.h, status.y + status.h) << it.key();
+        }
+        EXPECT_TRUE(items.contains("probe.tooltip")) << "the pointer rests on the scene: the probe shows";
+        if (items.contains("probe.tooltip")) {
+            const Box tip = boxOf(items["probe.tooltip"]);  // ImGui puts windows at whole pixels: 1 px of slack
+            EXPECT_GE(tip.x, scene.x - 1.0f);
+            EXPECT_GE(tip.y, scene.y - 1.0f);
+            EXPECT_LE(tip.x + tip.w, scene.x + scene.w + 1.0f) << "the probe's tooltip spills out of the scene viewport";
+            EXPECT_LE(tip.y + tip.h, scene.y + scene.h + 1.0f) << "the probe's tooltip spills out of the scene viewport";
+        }
         // The picture: the sky fills the scene's top rows and appears nowhere outside the viewport
         // but in the side view's picture, which has the same sky.
         ASSERT_TRUE(windows.contains("Side view"));
