@@ -20,9 +20,10 @@ namespace st::app {
 namespace {
 constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end even if the job hangs
 
-void writeStatus(const std::filesystem::path& file, const EditorSession& session, bool idle) {
+void writeStatus(const std::filesystem::path& file, const EditorWindow& window, const EditorSession& session, bool idle) {
     nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
-                           {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()}};
+                           {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()},
+                           {"title", window.title()}};
     const CameraSettings& c = session.camera();
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}}};
     writeTextAtomic(file, j.dump() + "\n");
@@ -47,7 +48,7 @@ void runFrames(EditorWindow& window, EditorSession& session, const EditorOptions
         session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr, last);
         if (last || session.quitRequested()) break;
         const FramePacer::Wait wait = pacer.after(session.activity());
-        if (opt.statusFile) writeStatus(*opt.statusFile, session, pacer.idle() && opt.frames == 0);
+        if (opt.statusFile) writeStatus(*opt.statusFile, window, session, pacer.idle() && opt.frames == 0);
         if (opt.frames > 0 || wait == FramePacer::Wait::None) continue;
         window.waitEvents(wait == FramePacer::Wait::Timeout ? FramePacer::kJobPollSeconds : -1.0);
     }

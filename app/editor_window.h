@@ -38,6 +38,7 @@ public:
     void endFrame();    // render ImGui over the back buffer
     void swapBuffers();
     void setTitle(const std::string& title);
+    const std::string& title() const { return title_; }  // "shadowtune - <preset file>[ *]"
     void framebufferSize(int& w, int& h) const;
     const std::filesystem::path& configDir() const { return configDir_; }
 
