@@ -43,6 +43,7 @@ struct UiState {
     bool showShadowMaps = true;
     bool showSideView = true;
     bool showHelp = false;
+    ImVec2 probeTooltipSize{0.0f, 0.0f};  // as last drawn: where it goes is decided before it is drawn
     bool showAccuracy = true;              // the Accuracy panel; closed, no ground truth is computed
     bool errorOverlay = true;              // its error overlay over the scene view
     int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
