@@ -145,15 +145,15 @@ std::vector<float> texelWorldSizes(const csm::CascadePlan& plan) {
 SunDisc sunDisc(const Settings& s) { return {s.light.angularDiameter, s.measure.sunRays, kSunDiscSeed}; }
 
 // Truth, accuracy and texel density of the frame `s` shows: everything but cost and flicker.
-void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
+void measureStill(MeasureSession::SceneEntry& e, Renderer& r, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
     auto t0 = Clock::now();
-    m.samples = sampleFrame(*e.renderer, pass, s, s, &m.frame);
+    m.samples = sampleFrame(r, pass, s, s, &m.frame);
     m.timings.measurePassMs = msSince(t0);
     t0 = Clock::now();
-    MeasureSession::CachedTruth& cached = cachedTruth(e, m.samples, -e.renderer->plan().wsLightDir, s.camera.position);
+    MeasureSession::CachedTruth& cached = cachedTruth(e, m.samples, -r.plan().wsLightDir, s.camera.position);
     m.truth = cached.truth;
     m.timings.groundTruthMs = msSince(t0);
-    const ResolutionCheck check(*e.truth, e.renderer->plan(), s.cascades.mapSize, s.camera.position);
+    const ResolutionCheck check(*e.truth, r.plan(), s.cascades.mapSize, s.camera.position);
     m.accuracy = scoreAccuracy(m.samples, m.truth, s.cascades.count, [&](std::size_t i, bool mapLit) {
         return check.explains(glm::vec3(m.samples.position[i]), glm::vec3(m.samples.geometry[i]),
                               m.samples.cascade(i), mapLit);
@@ -161,9 +161,13 @@ void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settin
     m.sun = sunDisc(s);
     m.timings.softTruthMs = cachedSoftTruth(e, cached, m.samples, m.sun);
     m.softTruth = cached.soft;
-    m.soft = scoreSoftAccuracy(m.samples, m.softTruth, texelWorldSizes(e.renderer->plan()),
+    m.soft = scoreSoftAccuracy(m.samples, m.softTruth, texelWorldSizes(r.plan()),
                                {.k = s.measure.artifactTexels});
     m.density = texelDensity(m.samples, s.cascades.count);
+}
+
+void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m) {
+    measureStill(e, *e.renderer, pass, s, m);
 }
 
 PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& presetDir, const MeasureOptions& opt) {
@@ -175,9 +179,10 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
         e.truth = std::make_unique<GroundTruth>(*e.scene);
         m.timings.bvhMs = e.truth->buildMs();
     }
-    measureStill(e, pass(), s, m);
+    Renderer& r = opt.renderer ? *opt.renderer : *e.renderer;
+    measureStill(e, r, pass(), s, m);
     m.warnings = zExtensionWarnings(m.frame);
-    const std::optional<float> farthest = farthestSampleDepth(m.samples, e.renderer->plan().vsView);
+    const std::optional<float> farthest = farthestSampleDepth(m.samples, r.plan().vsView);
     for (std::string& w : wastedMapWarnings(s, m.frame, m.density, farthest, opt.warningLimits))
         m.warnings.push_back(std::move(w));
     m.frame.warnings = m.warnings;
@@ -186,7 +191,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
                     std::to_string(m.sun.angularDiameter).substr(0, 4) + " deg)");
     if (opt.cost) {
         const auto t0 = Clock::now();
-        m.cost = opt.costFrames > 0 ? measureCost(*e.renderer, s, opt.costFrames) : countedCost(m.frame, s);
+        m.cost = opt.costFrames > 0 ? measureCost(r, s, opt.costFrames) : countedCost(m.frame, s);
         if (opt.costProfile) {
             m.cost->model = modelFrame(*opt.costProfile, m.cost->work);
             m.cost->profile = profileName(*opt.costProfile);
@@ -195,7 +200,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     }
     if (opt.flicker && s.path.frames > 0) {
         const auto t0 = Clock::now();
-        m.flicker = measureFlicker(*e.renderer, pass(), s, &m.flickerStdDev, m.truth);
+        m.flicker = measureFlicker(r, pass(), s, &m.flickerStdDev, m.truth);
         m.timings.flickerMs = msSince(t0);
         report(opt, "flicker over " + std::to_string(s.path.frames) + " frames " + seconds(m.timings.flickerMs));
     }

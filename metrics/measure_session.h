@@ -66,6 +66,10 @@ struct MeasureOptions {
     bool flicker = true;  // replay s.path when it has frames
     MapWarningLimits warningLimits;  // when a cascade's map counts as wasted
     std::function<void(const std::string&)> progress;  // one line per stage, if set
+    // Draw with this renderer (made for the scene of entryFor(s)) instead of the scene's own: a
+    // tune keeps one per view, so each view's maps stay drawn for candidates that differ only in
+    // what the maps do not hold (filter, bias), instead of being redrawn at every change of view.
+    Renderer* renderer = nullptr;
 };
 
 // The observer's world -> clip matrix: the preset camera at the output's aspect.
@@ -126,5 +130,7 @@ std::vector<std::string> frameWarnings(Renderer& r, MeasurePass& pass, const Set
 // Truth, accuracy and texel density of the frame `s` shows into `m` (the still part of
 // MeasureSession::measure; the entry's BVH must exist).
 void measureStill(MeasureSession::SceneEntry& e, MeasurePass& pass, const Settings& s, PresetMeasurement& m);
+// ... drawn by `r`, a renderer of the entry's scene (MeasureOptions::renderer).
+void measureStill(MeasureSession::SceneEntry& e, Renderer& r, MeasurePass& pass, const Settings& s, PresetMeasurement& m);
 
 }  // namespace st::metrics

@@ -40,6 +40,15 @@ ViewEvaluator::ViewEvaluator(metrics::MeasureSession& session, fs::path presetDi
     : session_(session), presetDir_(std::move(presetDir)), views_(std::move(views)), profile_(profile),
       objective_(std::move(objective)) {}
 
+Renderer* ViewEvaluator::rendererFor(std::size_t view, const Settings& sv) {
+    if (!perView_) return nullptr;
+    const Scene* scene = session_.entryFor(sv, presetDir_).scene.get();
+    if (scene != rendererScene_) renderers_.clear(), rendererScene_ = scene;
+    if (renderers_.size() < views_.size()) renderers_.resize(views_.size());
+    if (!renderers_[view]) renderers_[view] = std::make_shared<Renderer>(*scene);
+    return renderers_[view].get();
+}
+
 Evaluation ViewEvaluator::measure(const Settings& s, bool heldOut) {
     bool any = false;
     for (const View& v : views_) any = any || v.heldOut == heldOut;
@@ -59,6 +68,7 @@ Evaluation ViewEvaluator::measure(const Settings& s, bool heldOut) {
         if (flicker) sv.path = s.path;
         mo.flicker = flicker;
         try {
+            mo.renderer = rendererFor(std::size_t(&v - views_.data()), sv);
             m = session_.measure(sv, presetDir_, mo);
         } catch (const std::invalid_argument& err) {  // settings the cascade math rejects on this view
             Evaluation bad;
@@ -68,6 +78,7 @@ Evaluation ViewEvaluator::measure(const Settings& s, bool heldOut) {
             return bad;
         }
         ++measurements_;
+        for (const CascadeStats& c : m.frame.cascades) ++(c.redrawn ? mapsDrawn_ : mapsKept_);
         spent_.measurePassMs += m.timings.measurePassMs;
         spent_.groundTruthMs += m.timings.groundTruthMs;
         spent_.softTruthMs += m.timings.softTruthMs;

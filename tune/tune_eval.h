@@ -8,6 +8,7 @@
 #include "tune/tune_views.h"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,6 +40,10 @@ public:
     // With a camera path: the preset camera's view also measures the flicker F along the path
     // (flicker.flipRate), which the tune holds as a constraint (docs/tuning.md#views).
     void setPathFlicker(bool on) { pathFlicker_ = on; }
+    // One renderer per view (the default): each view keeps its maps while candidates differ only
+    // in what the maps do not hold (filter, bias); off, the session's one renderer draws every
+    // view and redraws every map at each change of view (the baseline of scripts/bench_tune.sh).
+    void setRendererPerView(bool on) { perView_ = on; }
     const Objective& objective() const { return objective_; }
 
     // On the tuned views (those not held out): figures averaged over the views (map bytes: the
@@ -47,6 +52,9 @@ public:
     // The figures alone (not judged), on the tuned or the held-out views (none held out: the tuned ones).
     Evaluation measure(const Settings& s, bool heldOut);
     int measurements() const { return measurements_; }
+    // Cascade maps drawn and kept over every measurement so far (FrameStats::cascades[i].redrawn).
+    int mapsDrawn() const { return mapsDrawn_; }
+    int mapsKept() const { return mapsKept_; }
     // Wall-clock milliseconds spent per view measurement, summed by stage (MeasureTimings).
     const metrics::MeasureTimings& spent() const { return spent_; }
 
@@ -58,6 +66,11 @@ private:
     Objective objective_;
     int measurements_ = 0;
     bool pathFlicker_ = false;
+    bool perView_ = true;
+    int mapsDrawn_ = 0, mapsKept_ = 0;
+    std::vector<std::shared_ptr<Renderer>> renderers_;  // per view, for the scene below (a copy shares them)
+    const Scene* rendererScene_ = nullptr;
+    Renderer* rendererFor(std::size_t view, const Settings& sv);
     metrics::MeasureTimings spent_;
 };
 

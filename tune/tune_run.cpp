@@ -9,6 +9,7 @@
 #include "sweep/sweep_spec.h"
 #include "tune/tune_eval.h"
 #include "tune/tune_explain.h"
+#include "tune/tune_holdout.h"
 #include "tune/tune_journal.h"
 #include "tune/tune_views.h"
 
@@ -151,7 +152,9 @@ private:
     TuneOutcome tune(std::chrono::steady_clock::time_point t0) {
         evaluator_.emplace(session_, presetDir_, views_, *opt_.profile, Objective{opt_.objective, {}});
         evaluator_->setPathFlicker(input_.path.frames > 0);
+        evaluator_->setRendererPerView(opt_.rendererPerView);
         screener_.emplace(session_, presetDir_, std::vector<View>{views_.front()}, *opt_.profile, Objective{opt_.objective, {}});
+        screener_->setRendererPerView(opt_.rendererPerView);
         resolveBudget();
         TuneOutcome out;
         const Evaluation cheap = measured(cheapest(input_), "tuned");
@@ -188,19 +191,23 @@ private:
         out.resumed = resumed_;
         out.stopped = result_.stopped;
         if (out.stopped) {
+            writeProgress("stopped", result_.evaluations, opt_.evaluations, &result_.evaluated);
             out.message = "stopped with " + std::to_string(journal_->size()) + " evaluations journaled in " +
                           (opt_.outDir / "evaluations.jsonl").string() + "; run the same command to resume";
             return out;
         }
         if (result_.best) simplify(*result_.best);
         if (!result_.best) {
+            writeProgress("infeasible", result_.evaluations, opt_.evaluations, &result_.evaluated);
             out.infeasible = true;
             out.message = "no point within the budget of " + budgetText(budget_) + " kept the artifact classes at the input's "
                           "level in " + std::to_string(result_.evaluations) + " evaluations";
             return out;
         }
         const Candidate& best = result_.evaluated[*result_.best];
+        writeProgress("explaining", result_.evaluations, opt_.evaluations, &result_.evaluated);
         writeOutputs(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        writeProgress("done", result_.evaluations, opt_.evaluations, &result_.evaluated);
         out.evaluations = made_;
         out.fromShards = fromShards_;
         if (!writes()) {
@@ -317,6 +324,10 @@ private:
             refs_.push_back({file.stem().string(), sweep::referenceOnBase(input_, ref, file.stem().string(), adapted)});
             for (const std::string& a : adapted) say("note: reference " + a);
         }
+        for (const fs::path& file : opt_.compareWith) {
+            std::vector<std::string> adapted;
+            compared_.push_back({file.stem().string(), sweep::referenceOnBase(input_, loadPreset(file), file.stem().string(), adapted)});
+        }
     }
 
     Json identity() const {
@@ -361,6 +372,48 @@ private:
             line += "nothing within the budget yet";
         }
         say(line + "; trying " + p.trying);
+        writeProgress("searching", p.evaluations, p.limit, p.evaluated);
+    }
+
+    Json pointJson(const Evaluation& e) const {
+        return {{"error", e.error}, {"costMs", e.costMs}, {"mapBytes", e.mapBytes}};
+    }
+
+    // progress.json: what a UI draws while the tune runs (docs/tuning.md#progress). Evaluations
+    // within the budget and the constraints are "feasible"; the input and the references are
+    // measured before the search starts, so they are there from the first write.
+    void writeProgress(const std::string& stage, int done, int limit, const std::vector<Candidate>* evaluated) {
+        if (!writes()) return;
+        Json refs = Json::object();
+        for (const auto* list : {&refs_, &compared_})
+            for (const auto& [name, r] : *list) {
+                Json j = pointJson(judge(measured(r, "tuned", list == &refs_), objective_));
+                j["budget"] = list == &refs_;
+                refs[name] = std::move(j);
+            }
+        Json points = Json::array();
+        std::optional<std::size_t> best;
+        if (evaluated)
+            for (std::size_t i = 0; i < evaluated->size(); ++i) {
+                const Candidate& c = (*evaluated)[i];
+                if (!c.eval.valid) continue;
+                Json j = pointJson(c.eval);
+                j["feasible"] = c.feasible;
+                points.push_back(std::move(j));
+                if (c.feasible && (!best || better(c, (*evaluated)[*best]))) best = i;
+            }
+        const Json progress = {{"version", kTuneVersion},
+                               {"stage", stage},
+                               {"evaluations", done},
+                               {"limit", limit},
+                               {"objective", opt_.objective},
+                               {"budgetMs", budget_.ms ? Json(*budget_.ms) : Json(nullptr)},
+                               {"budgetBytes", budget_.bytes ? Json(*budget_.bytes) : Json(nullptr)},
+                               {"input", pointJson(judge(measured(input_, "tuned"), objective_))},
+                               {"references", refs},
+                               {"best", best ? pointJson((*evaluated)[*best].eval) : Json(nullptr)},
+                               {"points", points}};
+        writeTextAtomic(opt_.outDir / "progress.json", progress.dump() + "\n");
     }
 
     Json evalJson(const Evaluation& e) const {
@@ -439,6 +492,7 @@ private:
         };
         add(input_, measured(input_, "tuned"), "input", true);
         for (const auto& [name, s] : refs_) add(s, measured(s, "tuned"), name, true);
+        for (const auto& [name, s] : compared_) add(s, measured(s, "tuned", false), name, true);
         // Labels stay short for the chart's front table: the moves that led to a point are in
         // evaluations.jsonl and explain.md.
         for (std::size_t i = 0; i < result_.evaluated.size(); ++i) {
@@ -470,19 +524,28 @@ private:
                   {"tuned", {{"tuned", evalJson(best.eval)}}},
                   {"references", Json::object()}};
         for (const auto& [name, r] : refs_) s["references"][name] = {{"tuned", evalJson(judge(measured(r, "tuned"), objective_))}};
+        if (!compared_.empty()) s["compared"] = Json::object();
+        for (const auto& [name, r] : compared_) s["compared"][name] = {{"tuned", evalJson(judge(measured(r, "tuned", false), objective_))}};
         if (heldOut) {
             const Evaluation in = judge(measured(input_, "held-out"), objective_);
             const Evaluation tu = judge(measured(best.settings, "held-out"), objective_);
             s["input"]["heldOut"] = evalJson(in);
             s["tuned"]["heldOut"] = evalJson(tu);
-            for (const auto& [name, r] : refs_) s["references"][name]["heldOut"] = evalJson(judge(measured(r, "held-out"), objective_));
-            // A tune that only fits the views it saw: on the held-out views it keeps less than half
-            // of the gain it made on the tuned ones, or is worse than the input.
-            const double gainTuned = inputEval.error - best.eval.error, gainHeld = in.error - tu.error;
-            const bool overfit = gainHeld < 0.5 * gainTuned || tu.error > in.error;
-            s["heldOutHolds"] = !overfit;
-            say(std::string(overfit ? "warning: the tune does not hold on the held-out views: " : "held-out views: ") +
-                errorText(opt_.objective, in.error) + " input -> " + errorText(opt_.objective, tu.error) + " tuned");
+            std::vector<HeldOutScore> refScores;
+            for (const auto& [name, r] : refs_) {
+                const Evaluation held = judge(measured(r, "held-out"), objective_);
+                s["references"][name]["heldOut"] = evalJson(held);
+                refScores.push_back({name, judge(measured(r, "tuned"), objective_).error, held.error});
+            }
+            const HeldOutVerdict v = heldOutVerdict({"input", inputEval.error, in.error}, refScores,
+                                                    {"tuned", best.eval.error, tu.error});
+            s["heldOutHolds"] = v.holds;
+            s["heldOutBaseline"] = v.baseline;
+            const Json& baseHeld = v.baseline == "input" ? s["input"]["heldOut"] : s["references"][v.baseline]["heldOut"];
+            say(std::string(v.holds ? "held-out views: " : "warning: the tune does not hold on the held-out views: ") +
+                errorText(opt_.objective, baseHeld["error"].get<double>()) + " " + v.baseline + " -> " +
+                errorText(opt_.objective, tu.error) + " tuned (on the tuned views " +
+                errorText(opt_.objective, best.eval.error + v.gainTuned) + " -> " + errorText(opt_.objective, best.eval.error) + ")");
         }
         const metrics::MeasureTimings& t = evaluator_->spent();
         const double n = std::max(1, evaluator_->measurements());
@@ -491,7 +554,9 @@ private:
                        {"meanMsPerViewMeasurement", t.totalMs / n},
                        {"meanRenderAndReadBackMs", t.measurePassMs / n},
                        {"meanTruthMs", t.groundTruthMs / n},
-                       {"meanSoftTruthMs", t.softTruthMs / n}};
+                       {"meanSoftTruthMs", t.softTruthMs / n},
+                       {"mapsDrawn", evaluator_->mapsDrawn() + screener_->mapsDrawn()},
+                       {"mapsKept", evaluator_->mapsKept() + screener_->mapsKept()}};
         say("time: median " + fixed(metrics::median(evalMs_), 0) + " ms per evaluation (" + std::to_string(evalMs_.size()) +
             " measured; per view " + fixed(t.totalMs / n, 0) + " ms: render and read-back " + fixed(t.measurePassMs / n, 0) +
             ", truth " + fixed(t.groundTruthMs / n, 0) + ", soft truth " + fixed(t.softTruthMs / n, 0) + ")");
@@ -503,6 +568,7 @@ private:
     fs::path presetDir_;
     std::vector<View> views_;
     std::vector<std::pair<std::string, Settings>> refs_;
+    std::vector<std::pair<std::string, Settings>> compared_;  // --compare-with: drawn, never a budget
     metrics::MeasureSession session_;
     std::optional<Journal> journal_;
     std::optional<ViewEvaluator> evaluator_;

@@ -2,7 +2,9 @@
 // One tune, end to end (docs/tuning.md): reads the preset and the budget, checks the budget can be
 // met at all, searches (tune_search.h) with every evaluation journaled so Ctrl-C keeps it and the
 // same command resumes, scores the result on held-out views, explains each change by ablation,
-// and writes tuned.json, front/, explain.json/.md and summary.json. Needs a current GL context.
+// and writes tuned.json, front/, explain.json/.md and summary.json. While it runs, progress.json
+// (rewritten atomically before each evaluation) says how far it is, for a UI to draw (the editor's
+// Tune panel). Needs a current GL context.
 #include "metrics/cost_model.h"
 #include "tune/tune_journal.h"
 #include "tune/tune_search.h"
@@ -23,6 +25,9 @@ struct TuneOptions {
     std::optional<double> budgetMs;                  // modelled frame cost
     std::optional<double> budgetMiB;                 // map memory
     std::vector<std::filesystem::path> budgetFrom;   // references: the cheapest one's cost and memory
+    // Presets measured on the same views and drawn on the front (the editor's A), but neither a
+    // budget nor a baseline nor a constraint.
+    std::vector<std::filesystem::path> compareWith;
     std::optional<std::pair<int, int>> size;         // override the preset's output size
     std::string objective = "soft-filtered";         // a figure table --error choice
     int views = 4;                                   // the preset's camera and views around it
@@ -38,6 +43,9 @@ struct TuneOptions {
     // every round and waits for the others'. The first shard writes the outputs.
     Shard shard;
     double shardWaitSeconds = 600.0;  // then a silent shard's share is measured here
+    // Each view keeps its own renderer and maps (ViewEvaluator::setRendererPerView); false: the
+    // baseline that redraws every map at every change of view (scripts/bench_tune.sh's ratio).
+    bool rendererPerView = true;
 };
 
 struct TuneOutcome {

@@ -48,6 +48,8 @@ void compareMenu(UiFrame& f) {
         ImGui::Separator();
         ImGui::MenuItem("Sweep panel", nullptr, &f.state.compare.showSweep);
         recordItem(f.state.rects, "menu.compare.sweep");
+        ImGui::MenuItem("Tune panel", nullptr, &f.state.tune.show);
+        recordItem(f.state.rects, "menu.compare.tune");
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -157,6 +159,7 @@ void drawCompare(UiFrame& f) {
         f.req.abDivider = c.divider;
     }
     drawSweepPanel(f);
+    drawTunePanel(f);
 }
 
 }  // namespace st::ui

@@ -109,7 +109,7 @@ void figures(UiFrame& f) {
     const AccuracyView& a = f.in.accuracy;
     figureLines(a, false);
     recordItem(f.state.rects, "accuracy.figures");
-    drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects);
+    if (const std::string rule = drawAdvice(adviseFromAccuracy(f.s, a), f.state.rects); !rule.empty()) openTuneFor(f.state.tune, rule);
     cascadeTable(f);
     // Wrapped: a warning ends with its likely fix, which a narrow panel used to cut (issue 21 #6).
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.2f, 1.0f));

@@ -17,8 +17,7 @@ bool isDirty(const Document& doc, const Settings& s) { return doc.clean && *doc.
 bool loadDocument(Document& doc, const std::filesystem::path& file, Settings& s) {
     try {
         Settings loaded = loadPreset(file);
-        const nlohmann::json j = loadJsonFile(file);  // a few kilobytes: read twice rather than widen loadPreset
-        doc.schema = j.is_object() && j.contains("$schema") && j["$schema"].is_string() ? j["$schema"].get<std::string>() : "";
+        doc.schema = presetSchemaRef(file);  // a few kilobytes: read twice rather than widen loadPreset
         s = loaded;
         doc.file = file;
         doc.clean = std::move(loaded);
@@ -42,9 +41,7 @@ bool saveDocument(Document& doc, const Settings& s, const std::filesystem::path&
     try {
         const Settings saved = documentPart(doc, s);
         // A URL stays as it is; a path follows the file into its folder, as the scene does.
-        const std::string schema = doc.schema.find("://") != std::string::npos || doc.file.empty()
-                                       ? doc.schema
-                                       : rebaseFileReference(doc.schema, folderOf(doc.file), folderOf(file));
+        const std::string schema = doc.file.empty() ? doc.schema : rebaseSchemaRef(doc.schema, folderOf(doc.file), folderOf(file));
         const std::filesystem::path folder = file.parent_path();
         std::error_code ec;
         const bool created = !folder.empty() && !std::filesystem::exists(folder, ec) && std::filesystem::create_directories(folder, ec);

@@ -1,6 +1,8 @@
 #include "ui/document_actions.h"
 
+#include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/preset_paths.h"
+#include "renderer/settings/settings_json.h"
 
 #include <imgui.h>
 
@@ -111,6 +113,20 @@ bool recordStep(UiState& state, Settings before, const Settings& after) {
 void applyEdit(UiFrame& f, Settings after) {
     closeGesture(f);
     if (recordStep(f.state, f.s, after)) replaceSettings(f, std::move(after));
+}
+
+Settings withAssignments(Settings s, const std::vector<std::pair<std::string, std::string>>& assignments) {
+    for (const auto& [path, json] : assignments) {
+        const FieldInfo* field = findField(path);
+        if (!field) continue;
+        try {
+            field->set(s, readFieldValue(*field, nlohmann::json::parse(json), path));
+            if (path == "cascades.count") fitCascadeFactors(s.bias, s.cascades.count);
+        } catch (const std::exception&) {
+            // A foreign point keeps what this build cannot set.
+        }
+    }
+    return s;
 }
 
 void undoEdit(UiFrame& f) {

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace st::ui {
 
@@ -37,6 +39,11 @@ void trackEditGesture(UiFrame& f, const Settings& beforeWidgets);
 bool recordStep(UiState& state, Settings before, const Settings& after);
 // Replaces the settings with `after` as one undo step (a picked sweep point, a pasted method).
 void applyEdit(UiFrame& f, Settings after);
+
+// `s` with each (field path, value as JSON text) set through the field table, as a sweep point or
+// a tune's explanation names them; a cascade count change keeps the per-cascade bias lists valid.
+// A pair this build cannot read is skipped (a point written by another build).
+Settings withAssignments(Settings s, const std::vector<std::pair<std::string, std::string>>& assignments);
 
 void undoEdit(UiFrame& f);
 void redoEdit(UiFrame& f);

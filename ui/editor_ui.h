@@ -24,6 +24,7 @@
 #include "ui/probe.h"
 #include "ui/split_bar.h"
 #include "ui/status_bar.h"
+#include "ui/tune_view.h"
 
 #include <imgui.h>
 
@@ -79,6 +80,8 @@ struct UiInputs {
     AbView ab;                               // the A half of the split view (while it is on)
     const SweepView* sweep = nullptr;        // the Sweep panel's run; nullptr: none yet
     std::vector<std::string> sweepableFields;  // field paths a sweep may vary (sweep::isSweepable)
+    const TuneView* tune = nullptr;          // the Tune panel's run; nullptr: none yet
+    std::vector<std::pair<std::string, std::string>> tuneObjectives;  // `tune --objective` choices: name, label
     MotionView motion;
 };
 
@@ -110,6 +113,8 @@ struct UiRequests {
     float abDivider = 0.5f;                  // the divider, as a fraction of the window's width
     std::optional<SweepRequest> sweepStart;  // Run pressed in the Sweep panel, with valid axes
     bool sweepCancel = false;                // Cancel pressed
+    std::optional<TuneRequest> tuneStart;    // Go pressed in the Tune panel, with valid fields
+    bool tuneCancel = false;                 // its Cancel pressed
     MotionRequests motion;                   // View > Motion's items
 };
 

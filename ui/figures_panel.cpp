@@ -105,21 +105,28 @@ void plot(const char* label, const History& history) {
 
 }  // namespace
 
-void drawAdvice(const std::vector<Advice>& advice, ItemRects& rects) {
+std::string drawAdvice(const std::vector<Advice>& advice, ItemRects& rects) {
     const ImVec4 colour{1.0f, 0.8f, 0.35f, 1.0f};
+    std::string tune;
     for (const Advice& a : advice) {
         ImGui::PushStyleColor(ImGuiCol_Text, colour);
         ImGui::TextWrapped("Advice: %s", a.text.c_str());
         ImGui::PopStyleColor();
         recordItem(rects, "advice." + a.rule);
+        ImGui::PushID(a.rule.c_str());
+        if (ImGui::SmallButton("Tune for this")) tune = a.rule;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open the Tune panel: search for the best settings within the current cost");
+        recordItem(rects, "advice." + a.rule + ".tune");
+        ImGui::PopID();
     }
+    return tune;
 }
 
-void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects) {
+std::string drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects) {
     ImGui::Separator();
     if (!stats) {
         ImGui::TextDisabled("No frame rendered yet: figures appear after the first frame.");
-        return;
+        return "";
     }
     ImGui::TextWrapped("Splits: %s", splitList(*stats).c_str());
     ImGui::TextWrapped("%s", depthBoundsLine(*stats).c_str());
@@ -127,7 +134,7 @@ void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& r
                 stats->sceneTriangles);
     geometryTable(*stats);
     costTable(*stats);
-    drawAdvice(adviseFromFigures(s, *stats), rects);
+    return drawAdvice(adviseFromFigures(s, *stats), rects);
 }
 
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats) {

@@ -7,13 +7,16 @@
 #include "ui/history.h"
 #include "ui/item_rects.h"
 
+#include <string>
 #include <vector>
 
 namespace st::ui {
 
-void drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects);  // under the cascade knobs, with advice
+std::string drawCascadeFigures(const Settings& s, const FrameStats* stats, ItemRects& rects);  // under the cascade knobs, with advice
 // Advice (ui/advice.h) as wrapped lines in the advice colour, recorded as "advice.<rule>".
-void drawAdvice(const std::vector<Advice>& advice, ItemRects& rects);
+// Each piece of advice with a "Tune for this" button: returns the rule whose button was pressed,
+// or "".
+std::string drawAdvice(const std::vector<Advice>& advice, ItemRects& rects);
 void drawTimingPlots(const TimingHistory& timing, const FrameStats* stats);
 
 // Adds this frame's timings to the plots (nothing for the GPU without stats).

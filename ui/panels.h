@@ -22,6 +22,7 @@ void drawStatusBar(UiFrame& f);       // status_bar.cpp: frame rate, scene viewp
 void drawSceneLegends(UiFrame& f);    // legends.cpp: colour keys over the scene viewport's corner
 void drawCompare(UiFrame& f);         // ab_split.cpp: Compare menu, Set as A, split divider; sweep_panel.cpp
 void drawSweepPanel(UiFrame& f);      // sweep_panel.cpp (called by drawCompare)
+void drawTunePanel(UiFrame& f);       // tune_panel.cpp (called by drawCompare): budget, objective, Go, front, apply
 void setAsA(UiFrame& f);              // ab_split.cpp: snapshot the settings as A, split on
 void toggleSplit(UiFrame& f);         // ab_split.cpp: split on/off (A = now if none yet)
 

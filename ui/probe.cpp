@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace st::ui {
@@ -33,7 +34,26 @@ void probeLines(const ProbeView& p) {
     ImGui::Text("      %s normal offset (N.L %.2f)", formatLength(p.normalOffset).c_str(), double(p.nDotL));
 }
 
+// One axis: after the cursor, else before it, else as far after as `hi` lets it (from `lo` when
+// it is larger than the room).
+float placeAlong(float cursor, float size, float lo, float hi, float after, float before) {
+    if (cursor + after + size <= hi) return cursor + after;
+    if (cursor - before - size >= lo) return cursor - before - size;
+    return std::max(lo, std::min(cursor + after, hi - size));
+}
+
 }  // namespace
+
+ImVec2 placeProbeTooltip(ImVec2 mouse, ImVec2 size, const Rect& scene) {
+    // ImGui's own offsets from the cursor (16 right, 24 down of its tip; 8 left and up).
+    return {placeAlong(mouse.x, size.x, scene.min.x, scene.max.x, 16.0f, 8.0f),
+            placeAlong(mouse.y, size.y, scene.min.y, scene.max.y, 24.0f, 8.0f)};
+}
+
+float probeWrapWidth(const Rect& scene) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return std::max(8.0f * ImGui::GetFontSize(), std::min(scene.width(), 36.0f * ImGui::GetFontSize()) - 2.0f * style.WindowPadding.x);
+}
 
 void drawProbe(UiFrame& f) {
     const Rect& scene = f.state.layout.scene;
@@ -50,10 +70,27 @@ void drawProbe(UiFrame& f) {
     const ProbeView& p = f.in.probe;
     // Only the pixel asked for: a readout of another pixel (the mouse moved on) is not shown.
     if (!p.valid || p.x != int(f.req.probePixel.x) || p.y != int(f.req.probePixel.y)) return;
+    // Inside the scene viewport, not over the panels beside it (issue 21: at 1000x700 it covered
+    // the Shadow maps panel): ImGui keeps a tooltip inside the display only. The lines wrap to
+    // the viewport's width. The place is set before the tooltip begins (Begin draws its frame
+    // where it is then), from its size as last drawn, which the few frames drawn after any
+    // change bring up to date; before its first, from the wrap width and eight lines.
+    const float wrap = probeWrapWidth(scene);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImVec2& last = f.state.probeTooltipSize;
+    const ImVec2 size = last.x > 0.0f ? last
+                                      : ImVec2(wrap + 2.0f * style.WindowPadding.x,
+                                               8.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * style.WindowPadding.y);
+    ImGui::SetNextWindowPos(placeProbeTooltip(mouse, size, scene));
     ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
     probeLines(p);
-    ImGui::EndTooltip();
+    ImGui::PopTextWrapPos();
     recordItem(f.state.rects, "probe");  // the tooltip's last line
+    const ImVec2 pos = ImGui::GetWindowPos();
+    last = ImGui::GetWindowSize();
+    f.state.rects["probe.tooltip"] = {pos, {pos.x + last.x, pos.y + last.y}};
+    ImGui::EndTooltip();
 }
 
 }  // namespace st::ui

@@ -2,6 +2,8 @@
 // The hover probe over the scene: what the frame on screen did at the pixel under the mouse.
 // The app samples the frame (the measurement pass's per-pixel read-back, app/editor/scene_probe.h) and
 // fills a ProbeView; the UI shows it next to the mouse and says which pixel it wants next.
+#include "ui/layout.h"
+
 namespace st::ui {
 
 struct UiFrame;
@@ -25,5 +27,13 @@ struct ProbeView {
 // While the mouse is over the scene viewport and no window: the tooltip, and the pixel asked
 // for in UiRequests (probeWanted, probePixel).
 void drawProbe(UiFrame& f);
+
+// Where a tooltip of `size` goes for the mouse at `mouse` (display pixels): right of and below
+// the cursor as ImGui puts it, else left of or above it, so it stays inside `scene` and off the
+// panels around it; where neither side has room, as far as the viewport allows.
+ImVec2 placeProbeTooltip(ImVec2 mouse, ImVec2 size, const Rect& scene);
+
+// The width the tooltip's lines wrap at: the viewport's (less the padding), at most 36 em.
+float probeWrapWidth(const Rect& scene);
 
 }  // namespace st::ui

@@ -1,6 +1,7 @@
 // The Settings panel: every row of the field table as a widget, grouped by the first segment of
-// its JSON path in collapsing headers, with derived figures beside the knobs and the problems
-// validate() finds shown in red (under the field, and listed under the panel).
+// its JSON path in collapsing headers (the knobs that only reproduce a bug under a closed "Debug"
+// one), with derived figures beside the knobs and the problems validate() finds shown in red
+// (under the field, and listed under the panel).
 #include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/validation.h"
 #include "ui/field_overrides.h"
@@ -14,8 +15,9 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <optional>
 #include <cctype>
+#include <optional>
+#include <string>
 
 namespace st::ui {
 namespace {
@@ -32,15 +34,22 @@ std::string groupKey(std::string_view path) {
     return dot == std::string_view::npos ? "scene" : std::string(path.substr(0, dot));
 }
 
-// Groups in the order their first field appears in the table.
+// Groups in the order their first field appears in the table; the rows that exist only to
+// reproduce a bug (FieldInfo::debug) form the "debug" group, last.
 std::vector<FieldGroup> groupFields() {
     std::vector<FieldGroup> groups;
+    FieldGroup debug{"debug", {}};
     for (const FieldInfo& field : fieldTable()) {
+        if (field.debug) {
+            debug.fields.push_back(&field);
+            continue;
+        }
         const std::string key = groupKey(field.path);
         auto it = std::find_if(groups.begin(), groups.end(), [&](const FieldGroup& g) { return g.key == key; });
         if (it == groups.end()) it = groups.insert(groups.end(), FieldGroup{key, {}});
         it->fields.push_back(&field);
     }
+    if (!debug.fields.empty()) groups.push_back(std::move(debug));
     return groups;
 }
 
@@ -75,7 +84,8 @@ void drawField(UiFrame& f, const FieldInfo& field) {
 // What a group shows after its fields: the sun toggle, the cascade figures.
 void drawGroupExtras(UiFrame& f, const std::string& key) {
     if (key == "light") drawSunAnimation(f);
-    if (key == "cascades") drawCascadeFigures(f.s, f.in.stats, f.state.rects);
+    if (key == "cascades")
+        if (const std::string rule = drawCascadeFigures(f.s, f.in.stats, f.state.rects); !rule.empty()) openTuneFor(f.state.tune, rule);
 }
 
 // The groups an artist tunes all day start open; output, measurement and new groups start closed.
@@ -86,9 +96,19 @@ bool openByDefault(const std::string& key) {
     return false;
 }
 
+// "Debug (1 on)" when a debug knob is away from its default, so a closed heading still says
+// that a bug is being reproduced; the ID stays "debug" whatever the count.
+std::string headerLabel(const UiFrame& f, const FieldGroup& group) {
+    if (group.key != "debug") return titleOf(group.key);
+    const Settings defaults;
+    const auto on = std::count_if(group.fields.begin(), group.fields.end(),
+                                  [&](const FieldInfo* field) { return field->get(f.s) != field->get(defaults); });
+    return (on > 0 ? "Debug (" + std::to_string(on) + " on)" : std::string("Debug")) + "###debug";
+}
+
 void drawGroup(UiFrame& f, const FieldGroup& group) {
     const ImGuiTreeNodeFlags flags = openByDefault(group.key) ? ImGuiTreeNodeFlags_DefaultOpen : 0;
-    const bool open = ImGui::CollapsingHeader(titleOf(group.key).c_str(), flags);
+    const bool open = ImGui::CollapsingHeader(headerLabel(f, group).c_str(), flags);
     recordItem(f.state.rects, "group." + group.key);
     if (!open) return;
     for (const FieldInfo* field : group.fields) drawField(f, *field);

@@ -2,7 +2,9 @@
 // The status bar's figures as text, pure so tests can check them against their own arithmetic.
 #include "ui/history.h"
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace st::ui {
 
@@ -29,5 +31,22 @@ struct SceneRenderFigures {
 // "render 48 ms", "render 21 ms (interactive: 50 %, maps 1024, far ones staggered)",
 // "image reused (rendered in 48 ms)": the scene image's figures, beside the UI's frame rate.
 std::string sceneRenderText(const SceneRenderFigures& scene);
+
+// The same, short, for a narrow window: "render 21 ms (50 %, maps 1024)", "reused (48 ms)".
+std::string sceneRenderBrief(const SceneRenderFigures& scene);
+// "saves at 640 x 360 (framing differs)", "saves at 640 x 360, as shown".
+std::string saveSizeBrief(int outputWidth, int outputHeight, float sceneWidth, float sceneHeight);
+
+// One piece of the status bar, in its full and its short wording.
+struct StatusItem {
+    std::string full, brief;
+};
+
+// What each item shows in a bar `width` wide, items `spacing` apart (`textWidth` measures a
+// text): every full wording if they fit; else the last items take their short wording, one by
+// one from the end, until the line fits; if even the short ones do not, the last items are
+// dropped (""). At 1000x700 the full line ran 350 px past the window's edge (issue 21).
+std::vector<std::string> fitStatusItems(const std::vector<StatusItem>& items, float width, float spacing,
+                                        const std::function<float(const std::string&)>& textWidth);
 
 }  // namespace st::ui

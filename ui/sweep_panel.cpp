@@ -107,17 +107,7 @@ void runControls(UiFrame& f, const ParsedSweep& parsed) {
 
 // The picked point's assignments on top of the current settings, as one undo step.
 void apply(UiFrame& f, const SweepPoint& p) {
-    Settings after = f.s;
-    for (const auto& [path, json] : p.assignments) {
-        const FieldInfo* field = findField(path);
-        if (!field) continue;
-        try {
-            field->set(after, readFieldValue(*field, nlohmann::json::parse(json), path));
-        } catch (const std::exception&) {
-            // A point written by this build always reads back; a foreign one keeps what it cannot set.
-        }
-    }
-    applyEdit(f, std::move(after));
+    applyEdit(f, withAssignments(f.s, p.assignments));
     f.state.compare.applied = "applied " + p.label;
     f.state.compare.appliedAs = f.s;
 }

@@ -9,6 +9,7 @@
 #include "ui/field_widgets.h"
 #include "ui/history.h"
 #include "ui/layout.h"
+#include "ui/tune_state.h"
 #include "ui/map_cost.h"
 #include "ui/undo_stack.h"
 
@@ -42,6 +43,7 @@ struct UiState {
     bool showShadowMaps = true;
     bool showSideView = true;
     bool showHelp = false;
+    ImVec2 probeTooltipSize{0.0f, 0.0f};  // as last drawn: where it goes is decided before it is drawn
     bool showAccuracy = true;              // the Accuracy panel; closed, no ground truth is computed
     bool errorOverlay = true;              // its error overlay over the scene view
     int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
@@ -67,6 +69,7 @@ struct UiState {
     LayoutPrefs prefs;                     // column widths, hidden panels: kept by the app across runs
     Layout layout;                         // this frame's panel and scene rectangles (beginFrame)
     CompareUiState compare;                // A/B split and Sweep panel (ab_split.cpp, sweep_panel.cpp)
+    TuneUiState tune;                      // the Tune panel (tune_panel.cpp)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused

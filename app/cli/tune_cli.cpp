@@ -42,6 +42,11 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "memory, unless --budget-ms/--budget-mib are given)")
         ->expected(1, -1)
         ->check(CLI::ExistingFile);
+    cmd->add_option("--compare-with", opt->compareWith,
+                    "Presets whose method is measured on the same views and drawn on the front, without setting the "
+                    "budget (the editor's A)")
+        ->expected(1, -1)
+        ->check(CLI::ExistingFile);
     cmd->add_option("--size", *size, "Tune at this output size, WxH, instead of the preset's");
     cmd->add_option("--objective", opt->objective,
                     "Error figure to minimise; the soft truth's artifact classes may not get worse than the input's")
@@ -70,6 +75,9 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "Seconds to wait for another shard's measurement before measuring it here")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    cmd->add_flag("--shared-renderer", opt->sharedRenderer,
+                  "Measure every view with one renderer, redrawing every map at each change of view (the "
+                  "baseline scripts/bench_tune.sh compares with; the result is the same)");
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");
     cmd->callback([opt, budgetMs, budgetMiB, size, shard, ms, mib, &exitCode] {
         if (!shard->empty() && !parseShard(*shard, opt->shardIndex, opt->shardCount)) {

@@ -60,6 +60,8 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.budgetMs = opt.budgetMs;
         to.budgetMiB = opt.budgetMiB;
         to.budgetFrom = opt.budgetFrom;
+        to.compareWith = opt.compareWith;
+        to.rendererPerView = !opt.sharedRenderer;
         to.size = opt.size;
         to.objective = opt.objective;
         to.views = opt.views;

@@ -15,6 +15,8 @@ struct TuneCommandOptions {
     std::filesystem::path outDir;
     std::optional<double> budgetMs, budgetMiB;
     std::vector<std::filesystem::path> budgetFrom;
+    std::vector<std::filesystem::path> compareWith;
+    bool sharedRenderer = false;
     std::string objective = "soft-filtered";
     int views = 4;
     int holdOutEvery = 4;

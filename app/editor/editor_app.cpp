@@ -5,6 +5,8 @@
 #include "app/editor/frame_pacer.h"
 #include "renderer/gpu/debug_output.h"
 #include "renderer/image/image_io.h"
+#include "renderer/settings/preset_paths.h"
+#include "renderer/settings/settings_json.h"
 
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -18,9 +20,10 @@ namespace st::app {
 namespace {
 constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end even if the job hangs
 
-void writeStatus(const std::filesystem::path& file, const EditorSession& session, bool idle) {
+void writeStatus(const std::filesystem::path& file, const EditorWindow& window, const EditorSession& session, bool idle) {
     nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
-                           {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()}};
+                           {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()},
+                           {"title", window.title()}};
     const CameraSettings& c = session.camera();
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}}};
     writeTextAtomic(file, j.dump() + "\n");
@@ -45,10 +48,20 @@ void runFrames(EditorWindow& window, EditorSession& session, const EditorOptions
         session.frame(last && opt.screenshot ? &*opt.screenshot : nullptr, last);
         if (last || session.quitRequested()) break;
         const FramePacer::Wait wait = pacer.after(session.activity());
-        if (opt.statusFile) writeStatus(*opt.statusFile, session, pacer.idle() && opt.frames == 0);
+        if (opt.statusFile) writeStatus(*opt.statusFile, window, session, pacer.idle() && opt.frames == 0);
         if (opt.frames > 0 || wait == FramePacer::Wait::None) continue;
         window.waitEvents(wait == FramePacer::Wait::Timeout ? FramePacer::kJobPollSeconds : -1.0);
     }
+}
+
+// --save-as: the session's save, then the "$schema" of the preset the run opened, rebased for the
+// file written, as File > Save as keeps it (ui::saveDocument); the session's save dropped it
+// (issue 21 #8). The settings are read back from the file just written, so only the key is added.
+void saveScripted(EditorSession& session, const EditorOptions& opt) {
+    session.saveAs(*opt.saveAs);
+    const std::filesystem::path source = opt.preset ? *opt.preset : opt.presetDir / "default.json";
+    const std::string schema = rebaseSchemaRef(presetSchemaRef(source), folderOf(source), folderOf(*opt.saveAs));
+    if (!schema.empty()) savePresetAtomic(loadPreset(*opt.saveAs), *opt.saveAs, schema);
 }
 
 // One run from the window opening to the last frame's outputs; `closing` is set when the run
@@ -60,7 +73,7 @@ int runSession(const EditorOptions& opt, std::chrono::steady_clock::time_point& 
     if (opt.waitAccuracy) std::printf("%s\n", session.accuracy().summary().c_str());
     if (opt.previewPath) std::printf("%s\n", session.previewLine().c_str());
     if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
-    if (opt.saveAs) session.saveAs(*opt.saveAs);
+    if (opt.saveAs) saveScripted(session, opt);
     if (opt.layoutReport) session.writeLayoutReport(*opt.layoutReport);
     session.printFrameTimes();
     closing = std::chrono::steady_clock::now();

@@ -17,8 +17,8 @@ struct EditorOptions {
     std::optional<std::filesystem::path> layoutReport;  // JSON: the scene viewport and every panel's rectangle
     // Rewritten after every frame: {"pid", "frames" drawn, "idle": the editor waits for an event,
     // drawing nothing, "accuracy": the Accuracy panel's summary line, "split": the A/B split is
-    // shown}. What tests and the idle
-    // benchmark watch.
+    // shown, "camera", "title": the window's, which names the preset open}. What tests and the
+    // idle benchmark watch.
     std::optional<std::filesystem::path> statusFile;
     bool previewPath = false;   // View > Preview path on the first frame; with frames, run until it plays
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures

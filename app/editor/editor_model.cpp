@@ -25,6 +25,7 @@ EditorModel::EditorModel(const ModelOptions& opt) : opt_(opt) {
     std::error_code ec;
     const fs::path exe = opt.executable.empty() ? fs::read_symlink("/proc/self/exe", ec) : opt.executable;
     sweep_ = std::make_unique<EditorSweep>(exe);  // this binary's `sweep`
+    tune_ = std::make_unique<EditorTune>(exe);    // ... and its `tune`
     for (const FieldInfo& field : fieldTable())
         if (sweep::isSweepable(field)) sweepable_.emplace_back(field.path);
     scanPresets();
@@ -112,7 +113,10 @@ void EditorModel::applyCamera(const CameraInput& in) {
     }
 }
 
-void EditorModel::poll() { sweep_->poll(); }
+void EditorModel::poll() {
+    sweep_->poll();
+    tune_->poll();
+}
 
 void EditorModel::apply(const ui::UiRequests& r) {
     if (r.quit) quit_ = true;
@@ -146,6 +150,8 @@ void EditorModel::apply(const ui::UiRequests& r) {
     applyMotion(r.motion, r.change != ChangeClass::None || r.frameScene || r.swapSideView);
     if (r.sweepCancel) sweep_->cancel();
     if (r.sweepStart) sweep_->start(*r.sweepStart, valid_, a_, sceneBase());
+    if (r.tuneCancel) tune_->cancel();
+    if (r.tuneStart) tune_->start(*r.tuneStart, valid_, a_, sceneBase());
     if (const SceneOptions options{.ground = valid_.ground}; st::sceneKey(valid_.scene, sceneBase(), options) != loadedKey_)
         loadScene(valid_.scene, options);
 }

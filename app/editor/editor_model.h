@@ -1,6 +1,6 @@
 #pragma once
 // The editor's state without a window or GL (issue 21 #1): the document and its settings, the
-// last valid settings (what is rendered), A, the loaded scene, the cameras, the Sweep child and
+// last valid settings (what is rendered), A, the loaded scene, the cameras, the Sweep and Tune children and
 // the messages. The shell feeds it the frame's camera input and the panels' requests; the
 // viewport renders what it holds. Nothing here includes GL or GLFW (docs/layers.json's
 // app/editor/model layer checks it), so its tests run without a context.
@@ -8,6 +8,7 @@
 // Messages belong here and are cleared by the change that made them stale (issue 21 #4, #11):
 // a valid settings change, a scene that loads, the render that works again.
 #include "app/editor/editor_sweep.h"
+#include "app/editor/editor_tune.h"
 #include "app/editor/fly_camera.h"
 #include "app/editor/motion_preview.h"
 #include "app/editor/view_actions.h"
@@ -91,6 +92,9 @@ public:
     const std::vector<std::filesystem::path>& presetFiles() const { return presetFiles_; }
     const std::vector<std::string>& sweepableFields() const { return sweepable_; }
     const EditorSweep& sweep() const { return *sweep_; }
+    const EditorTune& tune() const { return *tune_; }
+    // `tune --objective` choices (name, label) for the Tune panel.
+    const std::vector<std::pair<std::string, std::string>>& tuneObjectives() const { return tuneObjectives_; }
     ui::EditorUi& ui() { return *ui_; }
     const ui::EditorUi& ui() const { return *ui_; }
     bool orbiting() const { return orbiting_; }
@@ -144,6 +148,8 @@ private:
     void applyMotion(const ui::MotionRequests& m, bool changed);
     std::unique_ptr<EditorSweep> sweep_;
     std::vector<std::string> sweepable_;  // sweep::isSweepable over the field table
+    std::unique_ptr<EditorTune> tune_;    // the Tune panel's child
+    std::vector<std::pair<std::string, std::string>> tuneObjectives_ = app::tuneObjectives();
 };
 
 }  // namespace st::app

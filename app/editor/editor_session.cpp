@@ -71,6 +71,8 @@ void EditorSession::fillUiInputs(ui::UiInputs& in) const {
     };
     in.sweep = &model_->sweep().view();
     in.sweepableFields = model_->sweepableFields();
+    in.tune = &model_->tune().view();
+    in.tuneObjectives = model_->tuneObjectives();
     in.motion = model_->motionView();
 }
 
@@ -121,7 +123,8 @@ void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRe
     const ui::SweepView& sweep = model_->sweep().view();
     std::string shown = model_->message() + '\n' + model_->ui().windowTitle() + '\n' + viewport_->shownState() +
                         '\n' + std::to_string(int(sweep.state)) + ' ' + std::to_string(sweep.done) + ' ' +
-                        std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size());
+                        std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size()) + ' ' +
+                        std::to_string(int(model_->tune().view().state)) + ' ' + std::to_string(model_->tune().view().chart.points.size());
     activity_.events = events;
     activity_.changed = sceneRendered || r.change != ChangeClass::None || shown != lastShown_;
     lastShown_ = std::move(shown);
@@ -133,7 +136,7 @@ void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRe
         keyDown |= io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER);
     const bool buttonDown = std::find(std::begin(io.MouseDown), std::end(io.MouseDown), true) != std::end(io.MouseDown);
     activity_.animating = keyDown || buttonDown || opt_.orbitDegPerFrame != 0.0f || model_->preview().active();
-    activity_.jobRunning = viewport_->jobRunning(*model_) || model_->sweep().running();
+    activity_.jobRunning = viewport_->jobRunning(*model_) || model_->sweep().running() || model_->tune().running();
 }
 
 void EditorSession::saveAs(const fs::path& file) {

@@ -1,25 +1,15 @@
 #include "app/editor/editor_sweep.h"
 
+#include "app/editor/child_run.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
 #include "report/pareto.h"
 #include "sweep/sweep_run.h"
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-#include <thread>
-
-extern char** environ;
 
 namespace st::app {
 namespace fs = std::filesystem;
@@ -28,30 +18,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 constexpr auto kScanInterval = std::chrono::milliseconds(250);  // point files are looked for at most this often
-
-// A relative glTF path made absolute, so base.json loads from the temporary folder.
-std::string absoluteScene(const std::string& scene, const fs::path& presetDir) {
-    if (scene.rfind("builtin:", 0) == 0 || fs::path(scene).is_absolute()) return scene;
-    return fs::absolute(presetDir / scene).lexically_normal().string();
-}
-
-fs::path newRunFolder() {
-    std::error_code ec;
-    fs::path tmp = fs::temp_directory_path(ec);
-    if (ec) tmp = "/tmp";
-    std::string pattern = (tmp / "shadowtune-sweep-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a folder under " + tmp.string());
-    return pattern;
-}
-
-std::vector<std::string> lastLines(const fs::path& file, std::size_t count) {
-    std::ifstream in(file);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-        if (!line.empty()) lines.push_back(line);
-    if (lines.size() > count) lines.erase(lines.begin(), lines.end() - long(count));
-    return lines;
-}
 
 // The hover text: the figure table's Sweep-panel rows, one "label value" line each.
 std::string figureLines(const sweep::PointResult& r, const metrics::FigureTable& table) {
@@ -146,16 +112,7 @@ std::vector<ui::SweepPoint> chartPoints(const std::vector<sweep::PointResult>& r
 EditorSweep::EditorSweep(fs::path executable, int costFrames)
     : executable_(std::move(executable)), costFrames_(costFrames) {}
 
-EditorSweep::~EditorSweep() {
-    if (child_ <= 0) return;
-    ::kill(child_, SIGINT);
-    for (int i = 0; i < 100; ++i) {  // the point being measured: a few seconds at most
-        if (::waitpid(child_, nullptr, WNOHANG) == child_) return;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    ::kill(child_, SIGKILL);
-    ::waitpid(child_, nullptr, 0);
-}
+EditorSweep::~EditorSweep() { stopChild(child_); }
 
 void EditorSweep::fail(std::vector<std::string> errors) {
     view_.state = ui::SweepView::State::Failed;
@@ -178,7 +135,7 @@ void EditorSweep::start(const ui::SweepRequest& request, const Settings& live, c
     view_.measuredFrom = live;
     readCount_ = 0;
     try {
-        dir_ = newRunFolder();
+        dir_ = newRunFolder("shadowtune-sweep");
         view_.folder = (dir_ / "out").string();
         const fs::path file = writeEditorSweep(dir_, request, live, a, presetDir);
         spec_ = sweep::loadSweep(file);  // refused here, in the editor, with the reader's messages
@@ -190,23 +147,11 @@ void EditorSweep::start(const ui::SweepRequest& request, const Settings& live, c
     } catch (const std::exception& e) {
         return fail({e.what()});
     }
-    const std::string log = (dir_ / "log.txt").string();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    std::vector<std::string> args = {executable_.string(), "sweep", (dir_ / "sweep.json").string(), "--out",
-                                     view_.folder, "--frames", std::to_string(costFrames_)};
-    std::vector<char*> argv;
-    for (std::string& s : args) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const int rc = ::posix_spawn(&child_, args[0].c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) {
-        child_ = -1;
-        return fail({"cannot run " + args[0] + ": " + std::strerror(rc)});
-    }
+    const std::vector<std::string> args = {executable_.string(), "sweep", (dir_ / "sweep.json").string(), "--out",
+                                           view_.folder, "--frames", std::to_string(costFrames_)};
+    std::string error;
+    child_ = spawnLogged(args, dir_ / "log.txt", error);
+    if (child_ <= 0) return fail({error});
     started_ = Clock::now();
     lastScan_ = started_ - kScanInterval;
     view_.state = ui::SweepView::State::Running;
@@ -245,10 +190,8 @@ void EditorSweep::finish(int status) {
     } else if (cancelling) {
         view_.state = ui::SweepView::State::Cancelled;
     } else {
-        std::vector<std::string> errors{"the sweep ended with " +
-                                        (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
-                                                           : "signal " + std::to_string(WTERMSIG(status))) +
-                                        "; its last lines (" + (dir_ / "log.txt").string() + "):"};
+        std::vector<std::string> errors{"the sweep ended with " + exitText(status) + "; its last lines (" +
+                                        (dir_ / "log.txt").string() + "):"};
         for (std::string& l : lastLines(dir_ / "log.txt", 6)) errors.push_back(std::move(l));
         fail(std::move(errors));
     }

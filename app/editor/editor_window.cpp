@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 namespace st::app {
@@ -37,13 +38,48 @@ fs::path configDirectory() {
     return fs::current_path() / ".shadowtune";
 }
 
-void loadWindowSize(const fs::path& dir, int& w, int& h) {
+// The size window.json keeps, if it holds a usable one.
+bool loadWindowSize(const fs::path& dir, int& w, int& h) {
     std::ifstream in(dir / "window.json");
     nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (j.is_object() && j.value("width", 0) >= 320 && j.value("height", 0) >= 240) {
-        w = std::min(j.value("width", w), 8192);
-        h = std::min(j.value("height", h), 8192);
-    }
+    if (!j.is_object() || j.value("width", 0) < 320 || j.value("height", 0) < 240) return false;
+    w = std::min(j.value("width", w), 8192);
+    h = std::min(j.value("height", h), 8192);
+    return true;
+}
+
+struct WorkArea {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
+// The primary monitor's work area (the screen less the panels and docks), or nothing when GLFW
+// knows no monitor.
+std::optional<WorkArea> primaryWorkArea() {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (!monitor) return std::nullopt;
+    WorkArea a;
+    glfwGetMonitorWorkarea(monitor, &a.x, &a.y, &a.width, &a.height);
+    if (a.width <= 0 || a.height <= 0) return std::nullopt;
+    return a;
+}
+
+// The window follows the screen it opens on: the first launch takes the whole work area, and a
+// size kept from a larger screen shrinks to fit this one (a 1920x1080 window.json on a 1024x600
+// screen left the status bar and the right column off screen). Once the window exists, its
+// frame (title bar, borders; none without a window manager) is taken off too, and the window is
+// moved to the work area's corner if it would not fit where it is.
+void fitWindowToScreen(GLFWwindow* window, const WorkArea& area) {
+    int left = 0, top = 0, right = 0, bottom = 0;
+    glfwGetWindowFrameSize(window, &left, &top, &right, &bottom);
+    int w = 0, h = 0, x = 0, y = 0;
+    glfwGetWindowSize(window, &w, &h);
+    glfwGetWindowPos(window, &x, &y);
+    const int fitW = std::max(1, std::min(w, area.width - left - right));
+    const int fitH = std::max(1, std::min(h, area.height - top - bottom));
+    if (fitW != w || fitH != h) glfwSetWindowSize(window, fitW, fitH);
+    const bool inside = x - left >= area.x && y - top >= area.y && x + fitW + right <= area.x + area.width &&
+                        y + fitH + bottom <= area.y + area.height;
+    if (!inside) glfwSetWindowPos(window, area.x + left, area.y + top);
 }
 
 void saveWindowSize(const fs::path& dir, GLFWwindow* window) {
@@ -67,12 +103,16 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
     configDir_ = configDirectory();
     int w = 1280, h = 720;
-    loadWindowSize(configDir_, w, h);
+    const bool saved = loadWindowSize(configDir_, w, h);
+    const std::optional<WorkArea> area = primaryWorkArea();
+    if (area && !saved) w = area->width, h = area->height;
+    if (area) w = std::min(w, area->width), h = std::min(h, area->height);
     window_ = glfwCreateWindow(w, h, title.c_str(), nullptr, nullptr);
     if (!window_) {
         glfwTerminate();
         throw std::runtime_error("cannot open a window with an OpenGL 4.5 core context");
     }
+    if (area) fitWindowToScreen(window_, *area);
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
     if (debugContext) gpu::enableDebugOutput();

@@ -3,7 +3,8 @@
 // Decision: the ImGui OpenGL3 backend keeps its own loader (Debian's libimgui.a is built with
 // it); the rest of shadowtune uses libepoxy. Both resolve the same driver entry points.
 // Window size and the ImGui layout (imgui.ini) persist in $XDG_CONFIG_HOME/shadowtune
-// (default ~/.config/shadowtune).
+// (default ~/.config/shadowtune). The window fits the primary monitor's work area: the first
+// launch fills it, a size kept from a larger screen shrinks to it.
 #include "app/editor/key_queue.h"
 #include "app/editor/mouse_queue.h"
 
@@ -37,6 +38,7 @@ public:
     void endFrame();    // render ImGui over the back buffer
     void swapBuffers();
     void setTitle(const std::string& title);
+    const std::string& title() const { return title_; }  // "shadowtune - <preset file>[ *]"
     void framebufferSize(int& w, int& h) const;
     const std::filesystem::path& configDir() const { return configDir_; }
 

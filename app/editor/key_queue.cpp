@@ -5,6 +5,10 @@
 
 namespace st::app {
 
+namespace {
+bool isModifier(int key) { return key >= 340 && key <= 347; }  // GLFW_KEY_LEFT_SHIFT .. GLFW_KEY_RIGHT_SUPER
+}  // namespace
+
 Modifiers modifiersOf(std::span<const bool> keysDown) {
     const auto down = [&](int key) { return static_cast<std::size_t>(key) < keysDown.size() && keysDown[static_cast<std::size_t>(key)]; };
     // GLFW_KEY_LEFT_SHIFT 340, _CONTROL 341, _ALT 342, _SUPER 343; the right ones 344..347.
@@ -20,6 +24,7 @@ bool KeyQueue::feed(std::span<bool> keysDown) {
     };
     std::vector<Seen> changed;  // keys that changed this frame: a few at most
     std::deque<Event> later;
+    bool keyPressed = false;  // a key other than a modifier went down this frame
     for (const Event& e : events_) {
         if (e.key < 0 || static_cast<std::size_t>(e.key) >= keysDown.size()) continue;
         const auto i = static_cast<std::size_t>(e.key);
@@ -31,8 +36,17 @@ bool KeyQueue::feed(std::span<bool> keysDown) {
             seen->state = e.down;
             continue;
         }
+        if (isModifier(e.key) && keyPressed) {
+            // A modifier changing after a key's press would change what the press meant: Ctrl
+            // down in one frame, then A down and Ctrl up (xdotool's order, or a quick hand at
+            // 5 fps) in the next read as a plain A, and Ctrl+A did not select all (issue 21 #7).
+            later.push_back(e);
+            changed.push_back({e.key, e.down});
+            continue;
+        }
         keysDown[i] = e.down;
         changed.push_back({e.key, e.down});
+        keyPressed = keyPressed || (e.down && !isModifier(e.key));
     }
     events_ = std::move(later);
     return !events_.empty();

@@ -23,8 +23,9 @@ public:
     // Applies the queued events to `keysDown` (indexed by key code) in order, one change per key
     // per frame: a key's further events wait for the next frame, other keys' do not (so typing
     // "ss" at 5 fps delays the second s, not the keys after it, which would then arrive after
-    // the mouse and text they came with). Codes outside `keysDown` are dropped. Returns true if
-    // events are still waiting.
+    // the mouse and text they came with). A modifier's change that comes after another key's
+    // press waits a frame too, so the press is seen with the modifiers it was made with. Codes
+    // outside `keysDown` are dropped. Returns true if events are still waiting.
     bool feed(std::span<bool> keysDown);
 
     bool empty() const { return events_.empty(); }

@@ -165,7 +165,7 @@ std::vector<FieldInfo> cascadeFitRows() {
          .unit = "deg", .kind = K::Float, .min = 0, .max = 179, .step = 0.5, ST_FIELD_ACCESS(cascades.fitFovY)},
         {.path = "cascades.matricesOneFrameLate", .label = "Matrices one frame late",
          .help = "Debug: samples the maps through the previous frame's light matrices (three.js #30053), to see that bug's flicker.",
-         .kind = K::Bool, ST_FIELD_ACCESS(cascades.matricesOneFrameLate)},
+         .kind = K::Bool, .debug = true, ST_FIELD_ACCESS(cascades.matricesOneFrameLate)},
     };
 }
 

@@ -52,6 +52,9 @@ struct FieldInfo {
     // The uniform-block member of shaders/interface.h this field is copied into, by the same
     // name in C++ and GLSL (renderer/render/shader_blocks.cpp); "" when no shader reads it as is.
     std::string_view shader;
+    // Exists only to reproduce a bug (a regression scenario's control, e.g. the three.js late
+    // matrices): the editor keeps it out of its group, under a collapsed "Debug" heading.
+    bool debug = false;
     FieldValue (*get)(const Settings&) = nullptr;
     // Stores `value` into the field; throws std::bad_variant_access if the alternative does not
     // match `kind` (see FieldValue). Does not validate: call validate() afterwards.

@@ -36,4 +36,18 @@ void savePresetRebased(const Settings& s, const fs::path& fromDir, const fs::pat
     savePresetAtomic(rebasePaths(s, fromDir, folderOf(file)), file);
 }
 
+std::string presetSchemaRef(const fs::path& file) {
+    try {
+        const nlohmann::json j = loadJsonFile(file);
+        const auto it = j.is_object() ? j.find("$schema") : j.end();
+        return it != j.end() && it->is_string() ? it->get<std::string>() : "";
+    } catch (const SettingsError&) {
+        return "";
+    }
+}
+
+std::string rebaseSchemaRef(const std::string& ref, const fs::path& fromDir, const fs::path& toDir) {
+    return ref.find("://") != std::string::npos ? ref : rebaseFileReference(ref, fromDir, toDir);
+}
+
 }  // namespace st

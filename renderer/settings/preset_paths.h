@@ -27,4 +27,13 @@ Settings rebasePaths(Settings s, const std::filesystem::path& fromDir, const std
 // savePresetAtomic of `s`, whose references are relative to `fromDir`, rebased for `file`'s folder.
 void savePresetRebased(const Settings& s, const std::filesystem::path& fromDir, const std::filesystem::path& file);
 
+// The "$schema" a preset file names: "" when it names none or cannot be read. It carries no
+// setting (Settings has no field for it), but editors find the JSON Schema through it, so a save
+// of the preset elsewhere keeps it (rebaseSchemaRef).
+std::string presetSchemaRef(const std::filesystem::path& file);
+
+// A "$schema" written in a preset in `fromDir`, for a preset in `toDir`: a URL stays as it is, a
+// path is rebased as the scene is (rebaseFileReference).
+std::string rebaseSchemaRef(const std::string& ref, const std::filesystem::path& fromDir, const std::filesystem::path& toDir);
+
 }  // namespace st

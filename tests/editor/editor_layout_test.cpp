@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 namespace fs = std::filesystem;
 
@@ -43,7 +44,11 @@ protected:
     // The editor at w x h (the size the window file asks for) on `preset`, a few frames.
     int run(int w, int h, const fs::path& preset, const fs::path& shot, const std::string& extra = "--frames 5") {
         std::ofstream(dir / "shadowtune" / "window.json") << nlohmann::json{{"width", w}, {"height", h}}.dump();
-        const std::string cmd = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1920x1200x24' '" ST_SHADOWTUNE
+        return runOnScreen("1920x1200", preset, shot, extra);
+    }
+    // The editor on a screen of `screen` ("1024x600") with whatever window.json `dir` holds.
+    int runOnScreen(const std::string& screen, const fs::path& preset, const fs::path& shot, const std::string& extra = "--frames 5") {
+        const std::string cmd = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 " + screen + "x24' '" ST_SHADOWTUNE
                                 "' editor '" + preset.string() + "' --debug-gl --screenshot '" + shot.string() +
                                 "' --layout-report '" + (dir / "layout.json").string() + "' " + extra + " > '" +
                                 (dir / "log.txt").string() + "' 2>&1";
@@ -93,6 +98,29 @@ TEST_P(EditorLayoutAtSize, SceneViewportAndPanelsTileTheWindow) {
             for (auto other = windows.begin(); other != windows.end(); ++other)
                 if (other.key() != it.key()) EXPECT_FALSE(b.overlaps(boxOf(other.value()))) << it.key() << " / " << other.key();
         }
+        // Issue 21: at 1000x700 the status bar's line ran past the window's edge, and the probe's
+        // tooltip covered the Shadow maps panel.
+        const auto& items = report["items"];
+        ASSERT_TRUE(windows.contains("##status"));
+        const Box status = boxOf(windows["##status"]);
+        EXPECT_LE(status.x + status.w, float(c.w));
+        EXPECT_LE(status.y + status.h, float(c.h));
+        ASSERT_TRUE(items.contains("status.fps")) << items.dump();
+        for (auto it = items.begin(); it != items.end(); ++it) {
+            if (it.key().rfind("status.", 0) != 0) continue;
+            const Box b = boxOf(it.value());
+            EXPECT_LE(b.x + b.w, status.x + status.w) << it.key() << " runs past the status bar";
+            EXPECT_GE(b.y, status.y) << it.key();
+            EXPECT_LE(b.y + b.h, status.y + status.h) << it.key();
+        }
+        EXPECT_TRUE(items.contains("probe.tooltip")) << "the pointer rests on the scene: the probe shows";
+        if (items.contains("probe.tooltip")) {
+            const Box tip = boxOf(items["probe.tooltip"]);  // ImGui puts windows at whole pixels: 1 px of slack
+            EXPECT_GE(tip.x, scene.x - 1.0f);
+            EXPECT_GE(tip.y, scene.y - 1.0f);
+            EXPECT_LE(tip.x + tip.w, scene.x + scene.w + 1.0f) << "the probe's tooltip spills out of the scene viewport";
+            EXPECT_LE(tip.y + tip.h, scene.y + scene.h + 1.0f) << "the probe's tooltip spills out of the scene viewport";
+        }
         // The picture: the sky fills the scene's top rows and appears nowhere outside the viewport
         // but in the side view's picture, which has the same sky.
         ASSERT_TRUE(windows.contains("Side view"));
@@ -134,6 +162,33 @@ TEST_F(EditorLayoutTest, ColumnWidthAndHiddenPanelsComeBackInTheNextRun) {
     const nlohmann::json hidden = readJson(dir / "layout.json");
     EXPECT_FALSE(hidden["windows"].contains("Settings"));
     EXPECT_FLOAT_EQ(hidden["scene"][2].get<float>(), 1280.0f);
+}
+
+// The window did not follow the screen: it opened at 1280x720, or at the size window.json kept
+// from a larger screen, past the edge of a 1024x600 one (the status bar and the right column
+// off screen). Now the first launch fills the work area (without a window manager: the
+// screen), a kept size shrinks to it, and a size that fits is kept as it is.
+TEST_F(EditorLayoutTest, TheWindowFitsASmallScreen) {
+    const fs::path shot = dir / "shot.png";
+    const auto display = [&] {
+        const nlohmann::json report = readJson(dir / "layout.json");
+        return std::pair{report["display"][0].get<float>(), report["display"][1].get<float>()};
+    };
+    fs::remove(dir / "shadowtune" / "window.json");
+    ASSERT_EQ(runOnScreen("1024x600", ST_PRESET_DIR "/default.json", shot), 0) << "see " << (dir / "log.txt");
+    EXPECT_EQ(display(), std::pair(1024.0f, 600.0f)) << "the first launch fills the screen";
+    const nlohmann::json report = readJson(dir / "layout.json");
+    const Box status = boxOf(report["windows"]["##status"]);
+    EXPECT_LE(status.y + status.h, 600.0f) << "the status bar is on the screen";
+
+    std::ofstream(dir / "shadowtune" / "window.json") << R"({"width": 1920, "height": 1080})";
+    ASSERT_EQ(runOnScreen("1024x600", ST_PRESET_DIR "/default.json", shot), 0) << "see " << (dir / "log.txt");
+    EXPECT_EQ(display(), std::pair(1024.0f, 600.0f)) << "a size kept from a larger screen shrinks to this one";
+    EXPECT_EQ(readJson(dir / "shadowtune" / "window.json")["width"].get<int>(), 1024) << "and is kept so";
+
+    std::ofstream(dir / "shadowtune" / "window.json") << R"({"width": 800, "height": 500})";
+    ASSERT_EQ(runOnScreen("1024x600", ST_PRESET_DIR "/default.json", shot), 0) << "see " << (dir / "log.txt");
+    EXPECT_EQ(display(), std::pair(800.0f, 500.0f)) << "a size that fits is the user's";
 }
 
 TEST_F(EditorLayoutTest, ClosingTheWindowTakesUnderHalfASecond) {

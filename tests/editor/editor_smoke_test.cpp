@@ -5,6 +5,7 @@
 #include "tests/support/image_compare.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -35,7 +36,7 @@ TEST(EditorSmokeTest, WindowUnderXvfbShowsPanelsAndScene) {
     ASSERT_EQ(std::system(cmd.c_str()), 0) << "editor failed, see " << (dir / "log.txt");
     st::Rgba8Image img = st::readImage(shot);
     EXPECT_EQ(img.width, 1280);
-    EXPECT_EQ(img.height, 720);  // the size the editor opens with the first time
+    EXPECT_EQ(img.height, 800);  // the first launch fills the screen's work area (no window manager: all of it)
     EXPECT_GT(countNear(img, 158, 184, 217, 6), 20000) << "no sky: scene not drawn";   // clear colour, sRGB
     EXPECT_GT(countNear(img, 21, 22, 23, 4) + countNear(img, 15, 15, 15, 4), 2000) << "no ImGui panel";
     EXPECT_TRUE(fs::exists(dir / "imgui.ini") || fs::exists(dir / "shadowtune" / "imgui.ini"));
@@ -58,6 +59,17 @@ TEST(EditorSmokeTest, PresetSavedFromEditorReplaysHeadlessToTheSameImage) {
     st::Rgba8Image replayed = st::readImage(dir / "replay" / "saved.png");
     st::test::CompareResult r = st::test::compareImages(replayed, fromEditor, {});  // renderdiff tolerance
     EXPECT_TRUE(r.pass) << r.summary();
+    // Issue 21 #8: the scripted save dropped "$schema"; it names the source's schema file, first,
+    // as File > Save as writes it (the source's "../schema/preset.schema.json", from /tmp here).
+    std::ifstream in(dir / "saved.json");
+    const nlohmann::ordered_json saved = nlohmann::ordered_json::parse(in, nullptr, false);
+    ASSERT_TRUE(saved.is_object() && !saved.empty()) << "see " << dir / "saved.json";
+    EXPECT_EQ(saved.begin().key(), "$schema") << saved.dump(2);
+    ASSERT_TRUE(saved.contains("$schema") && saved["$schema"].is_string()) << saved.dump(2);
+    const fs::path schema = saved["$schema"].get<std::string>();
+    EXPECT_TRUE(fs::exists(dir / schema)) << schema;
+    if (fs::exists(dir / schema))
+        EXPECT_TRUE(fs::equivalent(dir / schema, fs::path(ST_PRESET_DIR) / "../schema/preset.schema.json")) << schema;
     fs::remove_all(dir);
 }
 

@@ -123,3 +123,55 @@ TEST(EditorXdotoolTest, QuickClicksThatMoveOnHitTheWidgetsTheyWereMadeOn) {
     EXPECT_TRUE(readJson(preset).value("ground", false)) << "the box was not ticked, or not saved";
     if (!::testing::Test::HasFailure()) fs::remove_all(dir);  // else kept for the logs named above
 }
+
+// Issue 21 #7 on the real window: Ctrl+A in a text field selects all of it. File > Open (Ctrl+O)
+// offers the last path, selected; "junk" typed over it, then Ctrl+A and a path typed over that
+// must open that path, not "junk<path>". Each key goes to an idle editor, as a user's would after
+// a pause: Ctrl's press wakes it alone, and the rest of xdotool's "key ctrl+a" (A down, Ctrl up,
+// A up, a few ms apart) reaches the next frame. The window title (in the status file) names the
+// preset open.
+TEST(EditorXdotoolTest, CtrlASelectsAllOfATextField) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "xvfb-run or xdotool missing (scripts/setup.sh installs xvfb and xdotool)";
+    const fs::path dir = fs::temp_directory_path() / ("st-ctrl-a-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "config" / "shadowtune");
+    std::ofstream(dir / "config" / "shadowtune" / "window.json") << R"({"width": 1280, "height": 720})";
+    const std::string target = ST_PRESET_DIR "/box-over-plane.json";
+    std::ofstream(dir / "drive.sh")
+        << "set -u\n"
+           // settled [FILE]: the editor is idle, having drawn a frame since FILE was copied.
+           "frames() { sed -n 's/.*\"frames\": *\\([0-9]*\\).*/\\1/p' \"$1\" 2>/dev/null; }\n"
+           "settled() {\n"
+           "  for i in $(seq 3000); do\n"
+           "    if grep -q '\"idle\": *true' status.json 2>/dev/null && { [ $# -eq 0 ] || [ \"$(frames status.json)\" != \"$(frames \"$1\")\" ]; }; then return; fi\n"
+           "    sleep 0.1\n"
+           "  done\n"
+           "}\n"
+           "step() { cp status.json before.json; eval \"$1\"; sleep 0.3; settled before.json; }\n"
+           "'" ST_SHADOWTUNE "' editor '" ST_PRESET_DIR "/dx-sdk-csm11.json' --status-file status.json > editor.txt 2>&1 &\n"
+           "pid=$!\n"
+           "settled\n"
+           "step 'xdotool mousemove 600 300'\n"  // no window manager: the keyboard follows the pointer (not at Xvfb's centre: a move)
+           "step 'xdotool key ctrl+o'\n"
+           "step 'xdotool type --delay 30 junk'\n"
+           "step 'xdotool key ctrl+a'\n"
+           "step \"xdotool type --delay 30 '" << target << "'\"\n"
+           "step 'xdotool key Return'\n"
+           "cp status.json after.json\n"
+           "kill -INT $pid\n"
+           "for i in $(seq 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done\n"
+           "kill -0 $pid 2>/dev/null && { kill -KILL $pid; exit 102; }\n"
+           "wait $pid\n";
+    const std::string cmd = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
+                            "' xvfb-run -a -s '-screen 0 1280x800x24' bash drive.sh > drive.txt 2>&1";
+    const int code = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(code));
+    EXPECT_EQ(WEXITSTATUS(code), 0) << "102: it did not close; see " << dir / "drive.txt" << " and " << dir / "editor.txt";
+    const nlohmann::json after = readJson(dir / "after.json");
+    ASSERT_TRUE(after.is_object()) << "no status file; see " << dir / "editor.txt";
+    EXPECT_EQ(after.value("title", ""), "shadowtune - box-over-plane.json")
+        << "Ctrl+O did not open File > Open, or Ctrl+A did not select the field's text (\"junk\" stayed in front of the path); see "
+        << dir / "editor.txt";
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+}

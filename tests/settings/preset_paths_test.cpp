@@ -44,3 +44,18 @@ TEST_F(PresetPathsFileTest, SavedIntoAnotherFolderTheSceneStillResolvesToTheSame
     EXPECT_EQ(loadPreset(dir / "top.json").scene, "assets/s.gltf");
     EXPECT_EQ(fs::weakly_canonical(dir / "elsewhere" / "deep" / saved.scene), fs::weakly_canonical(dir / "assets" / "s.gltf"));
 }
+
+// Issue 21 #8: the editor's --save-as dropped "$schema"; both saves keep it through these.
+TEST_F(PresetPathsFileTest, TheSchemaAPresetNamesIsReadAndRebasedLikeTheScene) {
+    fs::create_directories(dir / "presets" / "scenes");
+    Settings s;
+    savePresetAtomic(s, dir / "presets" / "scenes" / "a.json", "../../schema/preset.schema.json");
+    savePresetAtomic(s, dir / "presets" / "none.json");
+    EXPECT_EQ(presetSchemaRef(dir / "presets" / "scenes" / "a.json"), "../../schema/preset.schema.json");
+    EXPECT_EQ(presetSchemaRef(dir / "presets" / "none.json"), "");
+    EXPECT_EQ(presetSchemaRef(dir / "missing.json"), "") << "an unreadable file names no schema";
+    EXPECT_EQ(rebaseSchemaRef("../../schema/preset.schema.json", dir / "presets" / "scenes", dir / "presets"),
+              "../schema/preset.schema.json");
+    EXPECT_EQ(rebaseSchemaRef("https://example.org/preset.schema.json", "/a/b", "/c"), "https://example.org/preset.schema.json");
+    EXPECT_EQ(rebaseSchemaRef("", "/a/b", "/c"), "");
+}

@@ -29,12 +29,20 @@ run() { "$st" tune $(args) "$@"; }
 budget=$("$st" measure "$work/base.json" --size 160x90 --out "$work/m0" --frames 1 --no-flicker >/dev/null 2>&1 && jq '.cost.modelMs' "$work/m0/base/metrics.json")
 check "the input's modelled cost is read ($budget ms)" "[[ -n '$budget' && '$budget' != null ]]"
 
-run --out "$work/whole" >"$work/whole.log" 2>&1
+# The whole run also draws another preset on its front (the editor's A), which sets no budget.
+cat >"$work/cmp.json" <<'JSON'
+{"version": 1, "scene": "builtin:yard", "filter": {"kind": "hard"}, "cascades": {"count": 1, "mapSize": 256}}
+JSON
+run --out "$work/whole" --compare-with "$work/cmp.json" >"$work/whole.log" 2>&1
 check "a whole tune exits 0" "[[ $? -eq 0 ]] && [[ -s '$work/whole/tuned.json' ]]"
 check "it prints progress with the best so far" "grep -q 'tune \[[0-9]*/24\] best' '$work/whole.log'"
 check "it explains each change" "grep -q 'alone' '$work/whole/explain.md' && jq -e '.changes | length > 0' '$work/whole/explain.json' >/dev/null"
 check "it scores the held-out view" "jq -e '.tuned.heldOut.error != null and (.heldOutHolds | type == \"boolean\")' '$work/whole/summary.json' >/dev/null"
 check "the front is charted" "[[ -s '$work/whole/front/pareto.png' && -s '$work/whole/front/results.csv' ]]"
+p="$work/whole/progress.json" sm="$work/whole/summary.json"
+check "progress.json ends done, with the summary's count and best" "jq -e --slurpfile s '$sm' '.stage == \"done\" and .evaluations == \$s[0].search.evaluations and .best.error == \$s[0].tuned.tuned.error and .best.costMs == \$s[0].tuned.tuned.costMs and .budgetMs == $budget' '$p' >/dev/null"
+check "its feasible points are within the budget" "jq -e '[.points[] | select(.feasible)] | length > 0 and all(.costMs <= $budget)' '$p' >/dev/null"
+check "a compared preset is drawn but sets no budget" "jq -e '.references.cmp.budget == false' '$p' >/dev/null && jq -e '.compared.cmp.tuned.costMs > 0' '$sm' >/dev/null && grep -q ',reference,cmp,' '$work/whole/front/results.csv'"
 
 # Two shards on one folder, run at once: each measures a share, no point is measured twice, and
 # the first writes the unsharded run's tuned.json and explanation (the same seed, the same search).

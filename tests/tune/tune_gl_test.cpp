@@ -135,3 +135,37 @@ TEST(TunedPresetsTest, EachLoadsAndNamesItsSceneAndReference) {
 
 }  // namespace
 }  // namespace st::tune
+
+namespace st::tune {
+namespace {
+
+// A renderer per view keeps each view's maps across candidates that change only the filter or
+// the bias, and scores them exactly as one renderer redrawing every map at each view does.
+TEST_F(TuneGLTest, KeptMapsPerViewScoreExactlyAsRedrawnMaps) {
+    const Settings base = smallYard();
+    std::vector<Settings> candidates(5, base);
+    candidates[1].bias.slope += 0.5f;
+    candidates[2].filter.kind = FilterKind::PcfNxN;
+    candidates[3].bias.normalOffset = 0.5f;
+    candidates[4].cascades.lambda = 0.5f;  // new splits: every map is redrawn
+    const metrics::CostProfile profile = app::loadCostProfileOption("");
+    metrics::MeasureSession a, b;
+    ViewEvaluator perView(a, ST_SOURCE_DIR "/presets", tuneViews(base, 3, 0), profile, {"misclassified", {}});
+    ViewEvaluator shared(b, ST_SOURCE_DIR "/presets", tuneViews(base, 3, 0), profile, {"misclassified", {}});
+    shared.setRendererPerView(false);
+    int keptBefore = 0, drawnBefore = 0, sharedDrawnBefore = 0;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const Evaluation kept = perView(candidates[i]), redrawn = shared(candidates[i]);
+        EXPECT_EQ(kept.figures, redrawn.figures) << "candidate " << i;
+        if (i == 0) keptBefore = perView.mapsKept(), drawnBefore = perView.mapsDrawn(), sharedDrawnBefore = shared.mapsDrawn();
+        if (i == 3) {  // the three filter and bias candidates: every view kept every map
+            EXPECT_EQ(perView.mapsKept() - keptBefore, 3 * 3 * base.cascades.count);
+            EXPECT_EQ(perView.mapsDrawn(), drawnBefore);
+            EXPECT_GT(shared.mapsDrawn() - sharedDrawnBefore, 3 * base.cascades.count) << "one renderer alternating views redraws";
+        }
+    }
+    EXPECT_GT(perView.mapsDrawn(), drawnBefore) << "new splits redraw";
+}
+
+}  // namespace
+}  // namespace st::tune

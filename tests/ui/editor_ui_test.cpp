@@ -44,7 +44,7 @@ TEST_F(EditorUiTest, EveryFieldOfTheOpenGroupsHasAWidget) {
                                  group != "camera" && group != "light" && group != "cascades" &&
                                  group != "filter" && group != "bias";
         // Lists record their elements' rects; empty by default, they show only an Add button.
-        if (closedGroup || field.path == "cascades.manualSplits" || field.path == "cascades.updateInterval") continue;
+        if (closedGroup || field.debug || field.path == "cascades.manualSplits" || field.path == "cascades.updateInterval") continue;
         EXPECT_TRUE(d.drawn(field.path)) << field.path;
     }
     EXPECT_FALSE(d.drawn("output.width"));  // collapsed by default
@@ -52,6 +52,28 @@ TEST_F(EditorUiTest, EveryFieldOfTheOpenGroupsHasAWidget) {
     d.click("group.output");
     EXPECT_TRUE(d.drawn("output.width"));
     EXPECT_TRUE(d.drawn("output.view"));
+}
+
+// The late-matrices knob exists only to show three.js #30053's flicker: it sat among the Cascades
+// knobs an artist tunes. The table's debug rows are drawn under a "Debug" heading, closed.
+TEST_F(EditorUiTest, DebugKnobsSitUnderAClosedDebugHeadingNotInTheirGroup) {
+    const FieldInfo* late = findField("cascades.matricesOneFrameLate");
+    ASSERT_NE(late, nullptr);
+    EXPECT_TRUE(late->debug);
+    ASSERT_TRUE(d.drawn("cascades.fitFovY")) << "the Cascades group is open";
+    EXPECT_FALSE(d.drawn("cascades.matricesOneFrameLate")) << "drawn in the Cascades group";
+    d.scroll(d.rect("light.elevation").center(), -60.0f);  // the Debug heading is the last group
+    ASSERT_TRUE(d.drawn("group.debug"));
+    EXPECT_GT(d.rect("group.debug").min.y, d.rect("group.output").min.y) << "after every other group";
+    for (const FieldInfo& field : fieldTable())
+        if (field.debug) EXPECT_FALSE(d.drawn(field.path)) << field.path << ": the Debug heading starts closed";
+    d.click("group.debug");
+    d.frame();
+    for (const FieldInfo& field : fieldTable())
+        if (field.debug) EXPECT_TRUE(d.drawn(field.path)) << field.path;
+    d.click("cascades.matricesOneFrameLate");  // a checkbox: edits through the table as any row
+    EXPECT_TRUE(d.s.cascades.matricesOneFrameLate);
+    EXPECT_TRUE(d.ui().dirty());
 }
 
 TEST_F(EditorUiTest, ManualSplitsAppearForTheManualSchemeWithCountMinusOneEntries) {

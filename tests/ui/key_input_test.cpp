@@ -128,3 +128,63 @@ TEST_F(SlowFrameTest, ACtrlChordTappedBetweenTwoFramesIsSeen) {
     d.frames(3);
     EXPECT_TRUE(d.drawn("open.path")) << "Ctrl+O opens File > Open";
 }
+
+// Issue 21 #7: Ctrl+A did not select all. xdotool's "key ctrl+a" sends Ctrl down, A down, Ctrl up,
+// A up, a few ms apart: a frame that polled only Ctrl down left the rest to the next frame, which
+// applied A down and Ctrl up together and saw a plain A. A quick hand at 5 fps does the same.
+TEST(KeyQueueTest, AModifierReleasedAfterAKeyPressWaitsForTheNextFrame) {
+    app::KeyQueue q;
+    bool keys[512] = {};
+    constexpr int kCtrl = 341, kKeyA = 65;
+    q.push(kCtrl, true);
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_TRUE(keys[kCtrl]);
+    q.push(kKeyA, true);
+    q.push(kCtrl, false);
+    q.push(kKeyA, false);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[kKeyA]);
+    EXPECT_TRUE(keys[kCtrl]) << "A was pressed with Ctrl held";
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_FALSE(keys[kKeyA] || keys[kCtrl]);
+    // A modifier pressed after the key does not reach back to it either; one released before it does.
+    q.push(kKeyA, true);
+    q.push(kCtrl, true);
+    EXPECT_TRUE(q.feed(keys));
+    EXPECT_TRUE(keys[kKeyA] && !keys[kCtrl]);
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_TRUE(keys[kCtrl]);
+    q.push(kKeyA, false);
+    q.push(kCtrl, false);
+    q.push(kKeyA, true);
+    EXPECT_TRUE(q.feed(keys));  // A up and Ctrl up: A's press waits (A changed), so Ctrl may go
+    EXPECT_FALSE(keys[kKeyA] || keys[kCtrl]);
+    EXPECT_FALSE(q.feed(keys));
+    EXPECT_TRUE(keys[kKeyA] && !keys[kCtrl]) << "pressed after Ctrl was released: a plain A";
+}
+
+// The same through ImGui: the text field's Ctrl+A selects all, and typing replaces it.
+TEST(KeyQueueTest, CtrlAThroughTheQueueSelectsAllOfAField) {
+    UiDriver d;
+    d.frames(2);
+    d.click("presets.saveAsPath");
+    ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "the Save-as field has the keyboard";
+    app::KeyQueue q;
+    ImGuiIO& io = ImGui::GetIO();
+    const auto frame = [&] {
+        q.feed(io.KeysDown);
+        const app::Modifiers held = app::modifiersOf(io.KeysDown);
+        io.KeyCtrl = held.ctrl, io.KeyShift = held.shift;
+        d.frame();
+    };
+    q.push(341, true);
+    frame();
+    q.push(65, true);
+    q.push(341, false);
+    q.push(65, false);
+    frame();
+    frame();
+    d.typeText("mine");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.ui().presetFile().filename(), "mine.json") << "Ctrl+A did not select the old path";
+}

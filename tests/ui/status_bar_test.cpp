@@ -48,3 +48,44 @@ TEST(StatusBarTest, TheStatusBarSaysWhichSizeASaveRendersAt) {
     ASSERT_TRUE(d.drawn("status.saveSize"));
     EXPECT_EQ(d.rect("status.saveSize").min.y, d.rect("status.fps").min.y) << "in the status bar";
 }
+
+// Issue 21: at 1000x700 the status bar's line ran past the window's right edge, so the save size
+// and the H hint were cut off. Long wordings give way to short ones from the end, then the last
+// pieces go; the whole line is in the bar's tooltip.
+TEST(StatusBarTest, ANarrowBarShortensItsLastPiecesFirstThenDropsThem) {
+    const auto sevenPx = [](const std::string& t) { return 7.0f * float(t.size()); };
+    const std::vector<ui::StatusItem> items{{"aaaa", "a"}, {"bbbbbbbb", "bb"}, {"cccc", "c"}};
+    using Shown = std::vector<std::string>;
+    EXPECT_EQ(ui::fitStatusItems(items, 160.0f, 24.0f, sevenPx), (Shown{"aaaa", "bbbbbbbb", "cccc"}));  // 28 + 56 + 28 + 2 x 24
+    EXPECT_EQ(ui::fitStatusItems(items, 150.0f, 24.0f, sevenPx), (Shown{"aaaa", "bbbbbbbb", "c"}));     // 139
+    EXPECT_EQ(ui::fitStatusItems(items, 100.0f, 24.0f, sevenPx), (Shown{"aaaa", "bb", "c"}));           // 97
+    EXPECT_EQ(ui::fitStatusItems(items, 60.0f, 24.0f, sevenPx), (Shown{"a", "bb", ""}));                // 7 + 14 + 24
+    EXPECT_EQ(ui::fitStatusItems(items, 1.0f, 24.0f, sevenPx), (Shown{"a", "", ""})) << "the first piece always stays";
+    EXPECT_EQ(ui::sceneRenderBrief({.ms = 61.0, .scale = 0.35, .mapSize = 1024}), "render 61 ms (35 %, maps 1024)");
+    EXPECT_EQ(ui::sceneRenderBrief({.ms = 152.4, .reused = true}), "reused (152 ms)");
+    EXPECT_EQ(ui::saveSizeBrief(640, 360, 520.0f, 380.0f), "saves at 640 x 360 (framing differs)");
+    EXPECT_EQ(ui::saveSizeBrief(640, 360, 640.0f, 360.0f), "saves at 640 x 360, as shown");
+}
+
+TEST(StatusBarTest, AtAThousandPixelsEveryPieceOfTheBarIsInsideTheWindow) {
+    UiDriver d({1000.0f, 700.0f});
+    d.s.output.width = 640, d.s.output.height = 360;
+    d.in.cpuFrameMs = 130.0;
+    d.in.scene = {.ms = 95.0, .scale = 0.25, .mapSize = 512};  // the longest wording: interactive
+    d.frames(3);
+    const ui::ItemRect bar = d.rect("window.##status");
+    EXPECT_LE(bar.max.x, 1000.0f);
+    EXPECT_LE(bar.max.y, 700.0f);
+    int pieces = 0;
+    for (const char* key : {"status.fps", "status.sceneRender", "status.sceneSize", "status.saveSize", "status.hint"}) {
+        if (!d.drawn(key)) continue;
+        ++pieces;
+        const ui::ItemRect r = d.rect(key);
+        EXPECT_LE(r.max.x, bar.max.x - ImGui::GetStyle().WindowPadding.x + 0.5f) << key << " runs past the bar's edge";
+        EXPECT_GE(r.min.y, bar.min.y) << key;
+        EXPECT_LE(r.max.y, bar.max.y) << key;
+    }
+    EXPECT_TRUE(d.drawn("status.fps"));
+    EXPECT_TRUE(d.drawn("status.saveSize")) << "the save size has room at 1000 px in its short wording";
+    EXPECT_GE(pieces, 4);
+}

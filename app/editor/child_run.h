@@ -1,0 +1,31 @@
+#pragma once
+// What the editor's background runs (the Sweep and Tune panels) share: a fresh folder per run, a
+// child process of this binary with its output in a log, and its last lines when it fails.
+#include <sys/types.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace st::app {
+
+// A new empty folder $TMPDIR/<prefix>-XXXXXX (or /tmp); throws std::runtime_error.
+std::filesystem::path newRunFolder(const std::string& prefix);
+
+// A relative glTF path made absolute against presetDir, so a preset written elsewhere loads it.
+std::string absoluteScene(const std::string& scene, const std::filesystem::path& presetDir);
+
+// Starts args[0] with args, stdin from /dev/null, stdout and stderr into `log`: the child's pid,
+// or -1 with `error` set.
+pid_t spawnLogged(const std::vector<std::string>& args, const std::filesystem::path& log, std::string& error);
+
+// SIGINT, then up to 5 s for the child to finish what it is measuring, then SIGKILL; reaps it.
+void stopChild(pid_t child);
+
+// The last `count` non-empty lines of `file`.
+std::vector<std::string> lastLines(const std::filesystem::path& file, std::size_t count);
+
+// "exit code 3" or "signal 11", from a waitpid status.
+std::string exitText(int status);
+
+}  // namespace st::app
