@@ -182,6 +182,14 @@ std::string EditorModel::message() const {
     return all;
 }
 
+std::string EditorModel::shownState() const {
+    const ui::SweepView& sweep = sweep_->view();
+    const ui::TuneView& tune = tune_->view();
+    return message() + '\n' + ui_->windowTitle() + '\n' + std::to_string(int(sweep.state)) + ' ' +
+           std::to_string(sweep.done) + ' ' + std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size()) +
+           ' ' + std::to_string(int(tune.state)) + ' ' + std::to_string(tune.chart.points.size());
+}
+
 void EditorModel::savePresetAs(const fs::path& file, int width, int height) {
     Settings s = valid_;
     s.output.width = width;

@@ -84,6 +84,9 @@ public:
     bool quitRequested() const { return quit_; }
     // The messages on screen, joined: the renderer's, the scene's, the settings' and the actions'.
     std::string message() const;
+    // What changes on screen without a scene render (the frame pacer compares it): the messages,
+    // the window title, the Sweep and Tune children's progress.
+    std::string shownState() const;
     const std::shared_ptr<const Scene>& scene() const { return scene_; }
     const std::string& sceneKey() const { return loadedKey_; }
     int sceneGeneration() const { return sceneGeneration_; }  // a new Scene: the renderer is rebuilt

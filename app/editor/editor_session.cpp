@@ -120,11 +120,7 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
 }
 
 void EditorSession::noteActivity(bool events, bool sceneRendered, const ui::UiRequests& r) {
-    const ui::SweepView& sweep = model_->sweep().view();
-    std::string shown = model_->message() + '\n' + model_->ui().windowTitle() + '\n' + viewport_->shownState() +
-                        '\n' + std::to_string(int(sweep.state)) + ' ' + std::to_string(sweep.done) + ' ' +
-                        std::to_string(sweep.points.size()) + ' ' + std::to_string(sweep.errors.size()) + ' ' +
-                        std::to_string(int(model_->tune().view().state)) + ' ' + std::to_string(model_->tune().view().chart.points.size());
+    std::string shown = model_->shownState() + '\n' + viewport_->shownState();
     activity_.events = events;
     activity_.changed = sceneRendered || r.change != ChangeClass::None || shown != lastShown_;
     lastShown_ = std::move(shown);
