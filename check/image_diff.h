@@ -2,7 +2,8 @@
 // A rendered image against its golden, after Filament's renderdiff: a pixel fails when any
 // channel differs by more than max_channel_diff; the image fails when more than
 // max_failing_share of its pixels fail. No perceptual measure: the one a Debian library offers,
-// OpenImageIO's compare_Yee (2.4), finds no failing pixel even for a white block on grey.
+// OpenImageIO's compare_Yee (2.4), finds no failing pixel even for a white block on grey (it never
+// tests luminance; tests/check/perceptual_library_test.cpp shows it and fails once it does).
 #include "renderer/image/image_io.h"
 
 #include <optional>

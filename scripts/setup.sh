@@ -4,7 +4,8 @@
 # fonts-dejavu-core: every chart and label names its DejaVu family (report/chart_fonts.h), so
 # other installed fonts cannot change an image. jq: the command-line tests read JSON with it.
 # chromium, libxml2-utils: the check tests open its HTML report in headless Chromium and validate
-# its JUnit XML with xmllint --schema (tests/check).
+# its JUnit XML with xmllint --schema (tests/check). lld-14: the asan preset links with it (a tenth of
+# ld.bfd's time for an ASan test binary; cmake/unity.cmake).
 set -euo pipefail
 
 packages=(
@@ -22,7 +23,7 @@ packages=(
   libgtest-dev googletest
   xvfb xauth xdotool
   chromium libxml2-utils
-  clang-14 libclang-rt-14-dev llvm-14
+  clang-14 libclang-rt-14-dev llvm-14 lld-14
 )
 
 missing=()

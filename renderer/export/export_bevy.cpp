@@ -86,6 +86,12 @@ EngineExport exportBevy(const Settings& s, const PresetFacts& f) {
           c.fit == FitMode::Sphere && c.stabilize && c.zExtension == ZExtension::Pancake ? M::Approximated
                                                                                           : M::NoEquivalent,
           "Bevy always sizes a cascade by its slice's diagonal, snaps it and pancakes casters (unclipped depth)");
+    addKnobsWithoutSetting(
+        e, s,
+        {.cameraRelative = "Bevy fits its cascades in world space, in f32",
+         .fitFovY = "Bevy fits each cascade to the camera's current projection",
+         .contact = "not a DirectionalLight or cascade setting this export targets (bevy #16164 tracks screen-space "
+                    "contact shadows)"});
     addShadowtuneOnly(e, s, false);
     return e;
 }

@@ -111,16 +111,27 @@ void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades) {
     if (s.filter.screenSpace != ScreenSpace::Off)
         e.add("(screen-space shadow blur)", true, M::NoEquivalent,
               "filter.screenSpace: the shadow mask blurred in screen space (seed 001); no shadow setting does it");
-    if (s.filter.contact != ContactShadows::Off)
-        e.add("(contact shadows)", s.filter.contactLength, M::NoEquivalent,
-              "filter.contact: a screen-space march of filter.contactLength m toward the sun; set the engine's own "
-              "contact shadows by hand (Filament's screenSpaceContactShadows, Unreal's contact shadow length)");
     if (s.filter.padding)
         e.add("(PCF padding)", true, M::NoEquivalent, "filter.padding grows each light box by the kernel's reach (seed 004)");
     addCascadeBias(e, s);
+    if (c.matricesOneFrameLate)
+        e.add("(matrices one frame late)", true, M::NoEquivalent,
+              "cascades.matricesOneFrameLate: a debug reproduction of three.js #30053 (the maps sampled through the "
+              "previous frame's light matrices, so shadows flicker); engines sample the current frame's: leave it off");
     if (!engineFades && c.fadeBand > 0.0f)
         e.add("(far fade)", round6(c.fadeBand), M::NoEquivalent,
               "cascades.fadeBand fades the last cascade's far end to lit; the engine cuts shadows off at the distance");
+}
+
+void addKnobsWithoutSetting(EngineExport& e, const Settings& s, const KnobAnswers& a) {
+    const CascadeSettings& c = s.cascades;
+    if (c.cameraRelative && !a.cameraRelative.empty())
+        e.add("(camera-relative light space)", true, Mapping::NoEquivalent, "cascades.cameraRelative: " + a.cameraRelative);
+    if (c.fitFovY > 0.0f && !a.fitFovY.empty())
+        e.add("(fit field of view)", round6(c.fitFovY), Mapping::NoEquivalent, "cascades.fitFovY: " + a.fitFovY);
+    if (s.filter.contact != ContactShadows::Off && !a.contact.empty())
+        e.add("(contact shadows)", round6(s.filter.contactLength), Mapping::NoEquivalent,
+              "filter.contact, a screen-space march of filter.contactLength m toward the sun: " + a.contact);
 }
 
 }  // namespace st::xport

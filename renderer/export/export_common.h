@@ -36,9 +36,22 @@ double fadeShareOfEnd(const Settings& s, const PresetFacts& f);
 // "filter.kind vsm": for the notes of an engine's filter item.
 std::string filterKindText(const Settings& s);
 // Settings no engine's shadow settings expose (depth-fitted splits, a map size per cascade, cascades
-// redrawn every k frames, PCF padding, a bias per cascade; the far fade where `engineFades` is false): one no-equivalent
-// item each, only where the preset uses it, so an export never reads as complete when it is not.
+// redrawn every k frames, PCF padding, a bias per cascade, the debug one-frame-late matrices; the far
+// fade where `engineFades` is false): one no-equivalent item each, only where the preset uses it, so
+// an export never reads as complete when it is not.
 void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades);
+
+// The knobs each engine answers in its own way: camera-relative light space, a fit field of view
+// and contact shadows. Each exporter gives its engine's texts; an item is added only where the preset
+// uses the knob. A knob whose engine has a setting for it is exported by that exporter itself
+// (Godot's directional_shadow_min_fov, Unreal's and Filament's contact shadows) and its text here is
+// empty.
+struct KnobAnswers {
+    std::string cameraRelative;  // the note of "(camera-relative light space)"
+    std::string fitFovY;         // the note of "(fit field of view)"
+    std::string contact;         // the note of "(contact shadows)"
+};
+void addKnobsWithoutSetting(EngineExport& e, const Settings& s, const KnobAnswers& a);
 
 EngineExport exportGodot(const Settings& s, const PresetFacts& f);
 EngineExport exportUnity(const Settings& s, const PresetFacts& f);

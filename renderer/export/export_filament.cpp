@@ -79,6 +79,19 @@ EngineExport exportFilament(const Settings& s, const PresetFacts& f) {
     e.add("(light box fit)", "tight to the visible casters and receivers",
           s.cascades.fit == FitMode::Cascade ? M::Approximated : M::NoEquivalent,
           "Filament fits each light frustum to the slice and the scene; shadowtune's cascade fit is the slice alone");
+    // LightManager.h ShadowOptions: screenSpaceContactShadows (off), stepCount (8) and maxShadowDistance
+    // (0.3 m, world units): a screen-space march toward the sun, as filter.contact.
+    if (s.filter.contact != ContactShadows::Off) {
+        e.add("screenSpaceContactShadows", true, M::Exact, "filter.contact: a screen-space march toward the sun");
+        e.add("maxShadowDistance", round6(s.filter.contactLength), M::Approximated,
+              "filter.contactLength in metres: how far the march reaches; Filament's thickness is its own");
+        e.add("stepCount", std::min(s.filter.contactSteps, 255), M::Exact, "filter.contactSteps (a uint8_t)");
+    }
+    addKnobsWithoutSetting(
+        e, s,
+        {.cameraRelative = "not a ShadowOptions field; Filament fits each cascade in world space",
+         .fitFovY = "Filament fits each cascade to the camera's current frustum",
+         .contact = ""});
     addShadowtuneOnly(e, s, false);
     return e;
 }

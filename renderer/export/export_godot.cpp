@@ -101,6 +101,18 @@ EngineExport exportGodot(const Settings& s, const PresetFacts& f) {
     e.add("directional_shadow_fade_start", round6(1.0 - fadeShareOfEnd(s, f)), fades ? M::Approximated : M::Exact,
           fades ? "1 - cascades.fadeBand x the last cascade's range / max_distance: where Godot's fade begins"
                 : "1.0: shadows cut off at max_distance, as this preset's (no cascades.fadeBand; Godot's default 0.8)");
+    // godotengine/godot PR #119680 (open): DirectionalLight3D.directional_shadow_min_fov fits the splits for
+    // at least this FOV, so an FOV animation below it keeps their size (godot #72015).
+    if (s.cascades.fitFovY > 0.0f)
+        e.add("directional_shadow_min_fov", round6(s.cascades.fitFovY), M::Approximated,
+              "cascades.fitFovY in degrees; the property of godot PR #119680, not yet in a Godot release");
+    addKnobsWithoutSetting(
+        e, s,
+        {.cameraRelative = "Godot fits its splits in world space; only a precision=double build (large world "
+                           "coordinates) keeps precision far from the origin, no setting does",
+         .fitFovY = "",
+         .contact = "no property this export sets; Godot's screen-space contact shadows for directional lights "
+                    "(godot PR #118045) are set by hand"});
     addShadowtuneOnly(e, s, true);
     return e;
 }

@@ -77,6 +77,11 @@ EngineExport exportThreeJs(const Settings& s, const PresetFacts& f) {
     EngineExport e{Engine::ThreeJs, "three.js: CSM addon (examples/jsm/csm/CSM.js)", {}};
     addSplits(e, s, f);
     addFitAndBias(e, s);
+    addKnobsWithoutSetting(
+        e, s,
+        {.cameraRelative = "CSM.js fits its light boxes in world space, in float32",
+         .fitFovY = "CSM.js fits the camera's current frustum (updateFrustums() after a FOV change)",
+         .contact = "three.js has no screen-space contact shadows"});
     addShadowtuneOnly(e, s, false);
     return e;
 }

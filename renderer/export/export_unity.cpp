@@ -79,6 +79,11 @@ void addUnmapped(EngineExport& e, const Settings& s, const PresetFacts& f) {
                             : "0: shadows end at shadowDistance, as this preset's (no cascades.fadeBand)");
     if (c.blendBand > 0.0f)
         e.add("(cascade blending)", round6(c.blendBand), M::NoEquivalent, "URP does not blend between cascades");
+    addKnobsWithoutSetting(
+        e, s,
+        {.cameraRelative = "URP renders and fits its cascades in world space (camera-relative rendering is HDRP's)",
+         .fitFovY = "URP fits each cascade's sphere to the camera's current field of view",
+         .contact = "URP has no contact shadows (HDRP's Contact Shadows volume override has)"});
     addShadowtuneOnly(e, s, true);
 }
 

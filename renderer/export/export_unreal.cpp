@@ -78,6 +78,23 @@ EngineExport exportUnreal(const Settings& s, const PresetFacts& f) {
     e.add("ShadowDistanceFadeoutFraction", fadeShareOfEnd(s, f), c.fadeBand > 0.0f ? M::Approximated : M::Exact,
           c.fadeBand > 0.0f ? "cascades.fadeBand x the last cascade's range / shadow distance"
                             : "0: no fade, as this preset's (no cascades.fadeBand; UE's default 0.1)");
+    // LightComponent.h: ContactShadowLength, a screen-space march from each pixel toward the light (0 =
+    // off), in screen fractions unless ContactShadowLengthInWS, then in world units (cm).
+    if (s.filter.contact != ContactShadows::Off) {
+        e.add("ContactShadowLength", round6(s.filter.contactLength * 100.0), M::Approximated,
+              "filter.contactLength in cm; UE marches its own step count and thickness (filter.contactSteps, "
+              "filter.contactThickness have no setting)");
+        e.add("ContactShadowLengthInWS", true, M::Exact, "the length is in world units, as filter.contactLength");
+    }
+    addKnobsWithoutSetting(
+        e, s,
+        {.cameraRelative = "",  // below: UE5 is camera-relative whatever the preset says
+         .fitFovY = "UE fits each cascade to the camera's current field of view",
+         .contact = ""});
+    if (c.cameraRelative)
+        e.add("(camera-relative light space)", true, M::Exact,
+              "cascades.cameraRelative: UE5 renders in translated world space (large world coordinates), relative "
+              "to the camera, always; no setting");
     addShadowtuneOnly(e, s, true);
     e.add("r.Shadow.Virtual.Enable", 0, M::Exact, "virtual shadow maps off: the cascaded path these settings drive");
     return e;

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
 namespace st::xport {
 namespace {
 
@@ -151,6 +154,74 @@ TEST(ExportMathTest, BiasPerCascadeAndIgnoredFieldsAreListedAsTheyApply) {
         EXPECT_EQ(exportSettings(s, engine).find("(receiver-plane bias)"), nullptr);
     s.filter.kind = FilterKind::Pcf2x2;
     EXPECT_NE(exportSettings(s, Engine::Godot).find("(receiver-plane bias)"), nullptr);
+}
+
+// The knobs of issue 20's scenarios and contact shadows: every engine either names its own setting
+// for each (with the preset's value) or says it has none, and only when the preset uses the knob.
+TEST(ExportMathTest, NewerKnobsMapToTheEnginesSettingOrSayThereIsNone) {
+    Settings s = handSplits();
+    const char* knobItems[] = {"(camera-relative light space)", "(fit field of view)", "(contact shadows)",
+                               "(matrices one frame late)", "directional_shadow_min_fov", "ContactShadowLength",
+                               "screenSpaceContactShadows"};
+    for (size_t i = 0; i < kEngineNames.size(); ++i)
+        for (const char* name : knobItems)
+            EXPECT_EQ(exportSettings(s, Engine(i)).find(name), nullptr) << kEngineNames[i] << ": unused " << name;
+
+    s.cascades.cameraRelative = true;
+    s.cascades.fitFovY = 70.0f;
+    s.cascades.matricesOneFrameLate = true;
+    s.filter.contact = ContactShadows::March;
+    s.filter.contactLength = 0.25f;
+    s.filter.contactSteps = 16;
+    // Per engine, the item that answers each knob and its mapping (the engine's own setting where it
+    // has one, else a no-equivalent item).
+    struct Answer {
+        Engine engine;
+        const char* cameraRelative;
+        Mapping cameraRelativeMapping;
+        const char* fitFovY;
+        Mapping fitFovYMapping;
+        const char* contact;
+        Mapping contactMapping;
+    };
+    using M = Mapping;
+    const Answer answers[] = {
+        {Engine::Godot, "(camera-relative light space)", M::NoEquivalent, "directional_shadow_min_fov", M::Approximated,
+         "(contact shadows)", M::NoEquivalent},
+        {Engine::Unity, "(camera-relative light space)", M::NoEquivalent, "(fit field of view)", M::NoEquivalent,
+         "(contact shadows)", M::NoEquivalent},
+        {Engine::Unreal, "(camera-relative light space)", M::Exact, "(fit field of view)", M::NoEquivalent,
+         "ContactShadowLength", M::Approximated},
+        {Engine::Bevy, "(camera-relative light space)", M::NoEquivalent, "(fit field of view)", M::NoEquivalent,
+         "(contact shadows)", M::NoEquivalent},
+        {Engine::ThreeJs, "(camera-relative light space)", M::NoEquivalent, "(fit field of view)", M::NoEquivalent,
+         "(contact shadows)", M::NoEquivalent},
+        {Engine::Filament, "(camera-relative light space)", M::NoEquivalent, "(fit field of view)", M::NoEquivalent,
+         "maxShadowDistance", M::Approximated},
+    };
+    for (const Answer& a : answers) {
+        const EngineExport e = exportSettings(s, a.engine);
+        const std::string engine(kEngineNames[size_t(a.engine)]);
+        for (auto [name, mapping] : {std::pair{a.cameraRelative, a.cameraRelativeMapping}, {a.fitFovY, a.fitFovYMapping},
+                                     {a.contact, a.contactMapping}, {"(matrices one frame late)", M::NoEquivalent}}) {
+            const ExportItem* item = e.find(name);
+            ASSERT_NE(item, nullptr) << engine << ": " << name;
+            EXPECT_EQ(item->mapping, mapping) << engine << ": " << name;
+            EXPECT_FALSE(item->note.empty()) << engine << ": " << name;
+        }
+        // A knob answered by the engine's own setting is not listed again as having none.
+        if (std::string(a.contact) != "(contact shadows)") EXPECT_EQ(e.find("(contact shadows)"), nullptr) << engine;
+        if (std::string(a.fitFovY) != "(fit field of view)") EXPECT_EQ(e.find("(fit field of view)"), nullptr) << engine;
+    }
+    // The values are the preset's, in the engine's units.
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "directional_shadow_min_fov"), 70.0);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "(contact shadows)"), 0.25);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unreal), "ContactShadowLength"), 25.0);  // cm
+    EXPECT_EQ(exportSettings(s, Engine::Unreal).find("ContactShadowLengthInWS")->value, true);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Filament), "maxShadowDistance"), 0.25);
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("stepCount")->value, 16);
+    EXPECT_EQ(exportSettings(s, Engine::Filament).find("screenSpaceContactShadows")->value, true);
+    EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unity), "(fit field of view)"), 70.0);
 }
 
 TEST(ExportMathTest, EngineNames) {

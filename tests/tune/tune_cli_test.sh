@@ -24,9 +24,11 @@ check "and names the cheapest cost" "grep -q 'no settings fit the budget of 0.0 
 check "and writes no tuned preset" "[[ ! -e '$work/tiny/tuned.json' ]]"
 
 seed=7
-args() { echo "$work/base.json --budget-ms $budget --views 2 --hold-out-every 2 --evaluations 24 --seed $seed --size 160x90"; }
+# The preset's own 96x54 and 16 evaluations: enough for two shards to split a round and for a stop and a
+# resume, small enough for the asan build (each evaluation renders and ray-casts every view).
+args() { echo "$work/base.json --budget-ms $budget --views 2 --hold-out-every 2 --evaluations 16 --seed $seed --size 96x54"; }
 run() { "$st" tune $(args) "$@"; }
-budget=$("$st" measure "$work/base.json" --size 160x90 --out "$work/m0" --frames 1 --no-flicker >/dev/null 2>&1 && jq '.cost.modelMs' "$work/m0/base/metrics.json")
+budget=$("$st" measure "$work/base.json" --size 96x54 --out "$work/m0" --frames 1 --no-flicker >/dev/null 2>&1 && jq '.cost.modelMs' "$work/m0/base/metrics.json")
 check "the input's modelled cost is read ($budget ms)" "[[ -n '$budget' && '$budget' != null ]]"
 
 # The whole run also draws another preset on its front (the editor's A), which sets no budget.
@@ -35,7 +37,7 @@ cat >"$work/cmp.json" <<'JSON'
 JSON
 run --out "$work/whole" --compare-with "$work/cmp.json" >"$work/whole.log" 2>&1
 check "a whole tune exits 0" "[[ $? -eq 0 ]] && [[ -s '$work/whole/tuned.json' ]]"
-check "it prints progress with the best so far" "grep -q 'tune \[[0-9]*/24\] best' '$work/whole.log'"
+check "it prints progress with the best so far" "grep -q 'tune \[[0-9]*/16\] best' '$work/whole.log'"
 check "it explains each change" "grep -q 'alone' '$work/whole/explain.md' && jq -e '.changes | length > 0' '$work/whole/explain.json' >/dev/null"
 check "it scores the held-out view" "jq -e '.tuned.heldOut.error != null and (.heldOutHolds | type == \"boolean\")' '$work/whole/summary.json' >/dev/null"
 check "the front is charted" "[[ -s '$work/whole/front/pareto.png' && -s '$work/whole/front/results.csv' ]]"
@@ -73,18 +75,18 @@ check "a shard left alone finishes the tune" "[[ $? -eq 0 ]] && grep -q 'wrote n
 "$st" tune "$work/base.json" --budget-ms 5 --shard 3/2 --out "$work/bad" >"$work/badshard.log" 2>&1
 check "a shard past the count exits 2" "[[ $? -eq 2 ]] && grep -q 'expected k/n with 1 <= k <= n' '$work/badshard.log'"
 
-# Stopped after 9 new evaluations (as Ctrl-C stops): the evaluations are kept, and the same command
+# Stopped after 6 new evaluations (as Ctrl-C stops): the evaluations are kept, and the same command
 # resumes to the uninterrupted run's result.
-run --out "$work/cut" --stop-after 9 >"$work/cut.log" 2>&1
+run --out "$work/cut" --stop-after 6 >"$work/cut.log" 2>&1
 made=$(wc -l <"$work/cut/evaluations.jsonl")
-check "a stopped tune keeps the evaluations made ($made)" "[[ $made -eq 9 ]] && [[ ! -e '$work/cut/tuned.json' ]]"
+check "a stopped tune keeps the evaluations made ($made)" "[[ $made -eq 6 ]] && [[ ! -e '$work/cut/tuned.json' ]]"
 run --out "$work/cut" >"$work/resume.log" 2>&1
 check "the same command resumes" "[[ $? -eq 0 ]] && grep -q 'resuming: $made evaluations journaled' '$work/resume.log'"
 check "and reaches the uninterrupted run's tuned.json" "cmp -s '$work/whole/tuned.json' '$work/cut/tuned.json'"
 check "the same seed gives the same explanation" "cmp -s '$work/whole/explain.json' '$work/cut/explain.json'"
 
 # Ctrl-C once the third evaluation is under way: the run stops after it, exit 130, and keeps them.
-"$st" tune "$work/base.json" --budget-ms 1000 --size 640x360 --evaluations 500 --out "$work/int" >"$work/int.log" 2>&1 &
+"$st" tune "$work/base.json" --budget-ms 1000 --size 320x180 --evaluations 500 --out "$work/int" >"$work/int.log" 2>&1 &
 pid=$!  # not through run(): the signal must reach shadowtune
 for _ in $(seq 3000); do grep -q 'tune \[3/500\]' "$work/int.log" && break; sleep 0.01; done
 kill -INT "$pid"
