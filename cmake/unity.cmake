@@ -25,9 +25,9 @@ set_target_properties(st_export PROPERTIES UNITY_BUILD OFF)
 # tune_space.cpp's Json is nlohmann::json, its neighbours' nlohmann::ordered_json.
 st_compile_alone(st_tune tune/tune_space.cpp)
 # editor_accuracy.cpp: a local `using` shadows a neighbour's file-level alias (-Wshadow).
-st_compile_alone(shadowtune app/editor_accuracy.cpp)
+st_compile_alone(shadowtune app/editor/editor_accuracy.cpp)
 if(TARGET editor_gl_test)
-  st_compile_alone(editor_gl_test app/editor_accuracy.cpp)
+  st_compile_alone(editor_gl_test app/editor/editor_accuracy.cpp)
 endif()
 # Test files with their own kEye / kOverhead / sheetStack / readJson.
 if(BUILD_TESTING)
@@ -35,3 +35,7 @@ if(BUILD_TESTING)
   st_compile_alone(render_gl_test tests/render/pass_work_gl_test.cpp)
   st_compile_alone(editor_smoke_test tests/editor/editor_xdotool_test.cpp tests/editor/editor_idle_test.cpp)
 endif()
+# tune_panel.cpp: its own running / progress / runControls / chart beside sweep_panel.cpp's.
+st_compile_alone(st_ui ui/tune_panel.cpp)
+# editor_tune.cpp: its own kScanInterval / Clock / readJson beside editor_sweep.cpp's.
+st_compile_alone(st_editor_model app/editor/editor_tune.cpp)

@@ -1,6 +1,7 @@
 // The Accuracy panel: the ground truth of the frame on screen, computed by the app in the
 // background once the camera and settings are still, and the toggle of its error overlay.
 #include "ui/figures_panel.h"
+#include "ui/ui_colours.h"
 #include "ui/layout.h"
 #include "ui/legends.h"
 #include "ui/panels.h"
@@ -16,7 +17,6 @@ namespace {
 // The overlay's gross colours (metrics/metric_images.cpp); the blue lightened to read on a dark panel.
 const ImVec4 kFalseShadowColour{230 / 255.0f, 20 / 255.0f, 20 / 255.0f, 1.0f};
 const ImVec4 kFalseLightColour{60 / 255.0f, 110 / 255.0f, 255 / 255.0f, 1.0f};
-const ImVec4 kErrorColour{1.0f, 0.35f, 0.3f, 1.0f};
 
 std::string percent(double share) {
     char text[32];

@@ -166,4 +166,10 @@ PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size) {
     return result;
 }
 
+bool measuredElsewhere(const std::optional<Settings>& measuredFrom, const Settings& live) {
+    if (!measuredFrom) return false;
+    const Settings& from = *measuredFrom;
+    return from.camera != live.camera || from.light != live.light || from.scene != live.scene || from.ground != live.ground;
+}
+
 }  // namespace st::ui

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include <optional>
 #include <vector>
 
 namespace st::ui {
@@ -37,5 +38,9 @@ struct PlotResult {
 // input). byMemory: shadow-map memory on x instead of GPU time. The references labelled "current"
 // and "A" get their own marks.
 PlotResult drawParetoPlot(const SweepView& view, bool byMemory, ImVec2 size);
+
+// A chart's figures were measured from `measuredFrom`'s camera, sun and scene: once the live view
+// left them, they describe another frame (issue 21 #11). False when nothing was measured yet.
+bool measuredElsewhere(const std::optional<Settings>& measuredFrom, const Settings& live);
 
 }  // namespace st::ui

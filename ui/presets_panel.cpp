@@ -1,6 +1,7 @@
 // The Presets panel: the file being edited (with the dirty marker), Save / Save as, undo/redo,
 // the presets to load, and what went wrong with the last load or save.
 #include "ui/document_actions.h"
+#include "ui/ui_colours.h"
 #include "ui/layout.h"
 #include "ui/panels.h"
 
@@ -10,7 +11,6 @@
 namespace st::ui {
 namespace {
 
-const ImVec4 kErrorColour{1.0f, 0.35f, 0.3f, 1.0f};
 const ImVec4 kOkColour{0.45f, 0.85f, 0.45f, 1.0f};
 
 bool button(UiFrame& f, const char* label, const char* key, bool enabled = true) {

@@ -3,6 +3,7 @@
 // hovering a point shows its settings and figures, clicking applies them as one undo step.
 #include "renderer/settings/settings_json.h"
 #include "ui/document_actions.h"
+#include "ui/ui_colours.h"
 #include "ui/pareto_plot.h"
 #include "ui/panels.h"
 
@@ -15,7 +16,6 @@ namespace st::ui {
 
 namespace {
 
-const ImVec4 kErrorColour{1.0f, 0.35f, 0.3f, 1.0f};
 
 bool running(const SweepView* v) {
     return v && (v->state == SweepView::State::Running || v->state == SweepView::State::Cancelling);
@@ -121,19 +121,12 @@ void tooltip(const SweepPoint& p) {
     ImGui::EndTooltip();
 }
 
-// The chart's figures were measured from the run's camera, sun and scene: once the live view
-// left them, they describe another frame (issue 21 #11).
-bool measuredElsewhere(const SweepView& v, const Settings& live) {
-    if (!v.measuredFrom) return false;
-    const Settings& from = *v.measuredFrom;
-    return from.camera != live.camera || from.light != live.light || from.scene != live.scene || from.ground != live.ground;
-}
 
 void chart(UiFrame& f, const SweepView& v) {
     CompareUiState& c = f.state.compare;
     if (c.appliedAs && *c.appliedAs != f.s) c.applied.clear(), c.appliedAs.reset();  // a later edit
     if (v.points.empty()) return;
-    const bool stale = measuredElsewhere(v, f.s);
+    const bool stale = measuredElsewhere(v.measuredFrom, f.s);
     if (stale) {
         ImGui::TextColored(kErrorColour, "Measured from another view: the camera, sun or scene changed since. Run again.");
         recordItem(f.state.rects, "sweep.stale");

@@ -3,6 +3,7 @@
 // measured so far on a Pareto chart with the current settings and A marked; at the end the
 // explanation, each line applicable alone, and the tuned settings, each apply one undo step.
 #include "ui/document_actions.h"
+#include "ui/ui_colours.h"
 #include "ui/panels.h"
 #include "ui/pareto_plot.h"
 
@@ -26,7 +27,6 @@ void openTuneFor(TuneUiState& t, const std::string& adviceRule) {
 
 namespace {
 
-const ImVec4 kErrorColour{1.0f, 0.35f, 0.3f, 1.0f};
 
 bool running(const TuneView* v) {
     return v && (v->state == TuneView::State::Running || v->state == TuneView::State::Cancelling);
@@ -139,12 +139,6 @@ void runControls(UiFrame& f, const std::string& problem) {
     }
 }
 
-// The chart's figures were measured from the run's camera, sun and scene.
-bool measuredElsewhere(const TuneView& v, const Settings& live) {
-    if (!v.measuredFrom) return false;
-    const Settings& from = *v.measuredFrom;
-    return from.camera != live.camera || from.light != live.light || from.scene != live.scene || from.ground != live.ground;
-}
 
 void applyChanges(UiFrame& f, const std::vector<const TuneChange*>& changes, std::string what) {
     std::vector<std::pair<std::string, std::string>> assignments;
@@ -182,7 +176,7 @@ void explanation(UiFrame& f, const TuneView& v) {
 
 void chart(UiFrame& f, const TuneView& v) {
     if (v.chart.points.empty()) return;
-    const bool stale = measuredElsewhere(v, f.s);
+    const bool stale = measuredElsewhere(v.measuredFrom, f.s);
     if (stale) {
         ImGui::TextColored(kErrorColour, "Measured from another view: the camera, sun or scene changed since.");
         recordItem(f.state.rects, "tune.stale");
