@@ -12,7 +12,7 @@ using namespace st::test;
 
 namespace {
 
-constexpr int kKeyA = 65;
+constexpr int kKeySelectAll = 65;  // A, with Ctrl
 
 class TuneUiTest : public ::testing::Test {
 protected:
@@ -31,7 +31,7 @@ protected:
     }
     void replaceText(const char* key, const char* text) {
         d.click(key);
-        d.pressKey(kKeyA, true);  // select all
+        d.pressKey(kKeySelectAll, true);  // select all
         d.typeText(text);
         d.pressKey(kKeyEnter);
         d.frames(2);
