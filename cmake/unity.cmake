@@ -33,9 +33,13 @@ endif()
 if(BUILD_TESTING)
   st_compile_alone(metrics_test tests/metrics/soft_truth_test.cpp tests/metrics/still_accuracy_test.cpp)
   st_compile_alone(render_gl_test tests/render/pass_work_gl_test.cpp)
-  st_compile_alone(editor_smoke_test tests/editor/editor_xdotool_test.cpp tests/editor/editor_idle_test.cpp)
+  st_compile_alone(editor_smoke_test tests/editor/editor_xdotool_test.cpp tests/editor/editor_idle_test.cpp
+    tests/editor/editor_preview_test.cpp)
 endif()
 # tune_panel.cpp: its own running / progress / runControls / chart beside sweep_panel.cpp's.
 st_compile_alone(st_ui ui/tune_panel.cpp)
 # editor_tune.cpp: its own kScanInterval / Clock / readJson beside editor_sweep.cpp's.
 st_compile_alone(st_editor_model app/editor/editor_tune.cpp)
+if(TARGET editor_tune_test)
+  st_compile_alone(editor_tune_test app/editor/editor_tune.cpp)
+endif()
