@@ -15,6 +15,7 @@
 #include "sweep/sweep_spec.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <optional>
@@ -134,7 +135,7 @@ void printProfile(const metrics::CostProfile& p) {
 int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     const fs::path presetDir = opt.presetDir.empty() ? defaultPresetDir() : opt.presetDir;
     const std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size, opt.sweeps);
-    SceneCache<> scenes;
+    SceneCache<> scenes(true);  // one scene at a time: see SceneCache(bool)
     std::vector<metrics::CalibrationSample> samples;
     std::vector<std::pair<FrameWork, metrics::TimedFrames>> timed;
     std::vector<std::string> failed, timedNames;
@@ -205,7 +206,7 @@ int check(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     if (!sameRenderer(profile.renderer, ctx.rendererName()))
         std::fprintf(stderr, "warning: the profile is for \"%s\", this is \"%s\"\n", profile.renderer.c_str(),
                      ctx.rendererName().c_str());
-    SceneCache<> scenes;
+    SceneCache<> scenes(true);  // one scene at a time: see SceneCache(bool)
     FrameComparison all;
     SampleLog log(opt.samples);
     int unreadable = 0;

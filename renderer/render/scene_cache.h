@@ -27,12 +27,19 @@ public:
     // destroyed in reverse order, so whatever Extra builds over the scene goes before the scene.
     struct Entry : SceneSlot, Extra {};
 
+    SceneCache() = default;
+    // keepOne: loading a scene first drops every other scene and its renderer. Timing runs want
+    // it: on llvmpipe a frame of truck-town took 25-45 % longer after another scene's renderer
+    // had been used in the same context than in a fresh one (issue 18, docs/cost-model.md).
+    explicit SceneCache(bool keepOne) : keepOne_(keepOne) {}
+
     // The entry of s's scene (relative glTF paths resolve against presetDir), loaded and uploaded
     // on first use. Throws SceneError or what Renderer throws; a failed load leaves no entry.
     Entry& entryFor(const Settings& s, const std::filesystem::path& presetDir) {
         const SceneOptions options{.ground = s.ground};
         const std::string key = sceneKey(s.scene, presetDir, options);
         if (auto it = entries_.find(key); it != entries_.end()) return it->second;
+        if (keepOne_) entries_.clear();
         auto scene = std::make_unique<Scene>(loadScene(s.scene, presetDir, options));
         auto renderer = std::make_unique<Renderer>(*scene);
         Entry& e = entries_[key];
@@ -47,6 +54,7 @@ public:
 
 private:
     std::map<std::string, Entry> entries_;  // a map: entries stay put while others are added
+    bool keepOne_ = false;
 };
 
 }  // namespace st
