@@ -5,8 +5,6 @@
 #include "app/editor/frame_pacer.h"
 #include "renderer/gpu/debug_output.h"
 #include "renderer/image/image_io.h"
-#include "renderer/settings/preset_paths.h"
-#include "renderer/settings/settings_json.h"
 
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -54,16 +52,6 @@ void runFrames(EditorWindow& window, EditorSession& session, const EditorOptions
     }
 }
 
-// --save-as: the session's save, then the "$schema" of the preset the run opened, rebased for the
-// file written, as File > Save as keeps it (ui::saveDocument); the session's save dropped it
-// (issue 21 #8). The settings are read back from the file just written, so only the key is added.
-void saveScripted(EditorSession& session, const EditorOptions& opt) {
-    session.saveAs(*opt.saveAs);
-    const std::filesystem::path source = opt.preset ? *opt.preset : opt.presetDir / "default.json";
-    const std::string schema = rebaseSchemaRef(presetSchemaRef(source), folderOf(source), folderOf(*opt.saveAs));
-    if (!schema.empty()) savePresetAtomic(loadPreset(*opt.saveAs), *opt.saveAs, schema);
-}
-
 // One run from the window opening to the last frame's outputs; `closing` is set when the run
 // decides to end, before the session and the window are torn down.
 int runSession(const EditorOptions& opt, std::chrono::steady_clock::time_point& closing) {
@@ -73,7 +61,7 @@ int runSession(const EditorOptions& opt, std::chrono::steady_clock::time_point& 
     if (opt.waitAccuracy) std::printf("%s\n", session.accuracy().summary().c_str());
     if (opt.previewPath) std::printf("%s\n", session.previewLine().c_str());
     if (opt.sceneShot) session.writeSceneShot(*opt.sceneShot);
-    if (opt.saveAs) saveScripted(session, opt);
+    if (opt.saveAs) session.saveAs(*opt.saveAs);
     if (opt.layoutReport) session.writeLayoutReport(*opt.layoutReport);
     session.printFrameTimes();
     closing = std::chrono::steady_clock::now();

@@ -194,7 +194,10 @@ void EditorModel::savePresetAs(const fs::path& file, int width, int height) {
     Settings s = valid_;
     s.output.width = width;
     s.output.height = height;
-    savePresetRebased(s, sceneBase(), file);  // relative scene paths follow the file (issue 13 #1)
+    // Relative scene paths follow the file (issue 13 #1), and so does the "$schema" of the preset
+    // open, as File > Save as keeps it (ui::saveDocument, issue 21 #8): one write.
+    const std::string schema = presetPath_.empty() ? "" : presetSchemaRef(presetPath_);
+    savePresetRebased(s, sceneBase(), file, schema);
     presetPath_ = file;
 }
 

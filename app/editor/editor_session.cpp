@@ -97,7 +97,7 @@ void EditorSession::frame(const fs::path* screenshot, bool final) {
     model_->apply(requests);                                 // requests -> model
     // The close button or Ctrl+C asks the panels (unsaved changes) once the input queued before it
     // has landed and been drawn: a Save clicked just before Ctrl+C is saved, not asked about.
-    if (window_.shouldClose() && !window_.inputQueued()) {
+    if (window_.closeAskedAtPoll() && !window_.inputQueued()) {
         newEvents = true;  // Ctrl+C is no GLFW event: the frames that answer it must follow
         window_.cancelClose();
         model_->requestQuit();

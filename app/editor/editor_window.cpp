@@ -181,6 +181,7 @@ bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_) |
 void EditorWindow::cancelClose() {
     glfwSetWindowShouldClose(window_, GLFW_FALSE);
     interrupted = false;
+    closeAsked_ = false;
 }
 
 void EditorWindow::countEvent(GLFWwindow* window) { ++static_cast<EditorWindow*>(glfwGetWindowUserPointer(window))->events_; }
@@ -202,6 +203,7 @@ void EditorWindow::mouseButtonCallback(GLFWwindow* window, int button, int actio
 }
 
 void EditorWindow::beginFrame() {
+    closeAsked_ = shouldClose();  // before the poll: whatever was sent before it comes in with the poll
     glfwPollEvents();
     ImGuiIO& io = ImGui::GetIO();
     keysQueued_ = keys_.feed(io.KeysDown);

@@ -25,6 +25,12 @@ public:
 
     GLFWwindow* handle() const { return window_; }
     bool shouldClose() const;  // the close button, or SIGINT/SIGTERM (Ctrl+C in the terminal)
+    // shouldClose as it stood just before this frame polled its events. A Ctrl+C is a signal, not an
+    // X event: one that comes while a frame renders is seen by the shell before that frame has
+    // polled the clicks sent just before it (still in the X socket), and a Save clicked before
+    // Ctrl+C was then asked about as unsaved. Acting on the close only as of the last poll
+    // puts every event sent before it into the queues first (issue 21, EditorXdotoolTest).
+    bool closeAskedAtPoll() const { return closeAsked_; }
     void cancelClose();  // the close button was handled: keep running until the panels agree
     void beginFrame();  // poll events, start an ImGui frame
     // Waits until an event comes (input, resize, expose, focus) or `timeoutSeconds` pass; a
@@ -56,6 +62,7 @@ private:
     std::string title_;
     unsigned long events_ = 0;
     bool keysQueued_ = false;
+    bool closeAsked_ = false;  // shouldClose() just before beginFrame's poll
 };
 
 }  // namespace st::app

@@ -32,8 +32,9 @@ Settings rebasePaths(Settings s, const fs::path& fromDir, const fs::path& toDir)
     return s;
 }
 
-void savePresetRebased(const Settings& s, const fs::path& fromDir, const fs::path& file) {
-    savePresetAtomic(rebasePaths(s, fromDir, folderOf(file)), file);
+void savePresetRebased(const Settings& s, const fs::path& fromDir, const fs::path& file, const std::string& schemaRef) {
+    const fs::path toDir = folderOf(file);
+    savePresetAtomic(rebasePaths(s, fromDir, toDir), file, schemaRef.empty() ? "" : rebaseSchemaRef(schemaRef, fromDir, toDir));
 }
 
 std::string presetSchemaRef(const fs::path& file) {

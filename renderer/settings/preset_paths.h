@@ -24,8 +24,10 @@ std::string rebaseFileReference(const std::string& ref, const std::filesystem::p
 // `s` with every file reference rebased from `fromDir` to `toDir`.
 Settings rebasePaths(Settings s, const std::filesystem::path& fromDir, const std::filesystem::path& toDir);
 
-// savePresetAtomic of `s`, whose references are relative to `fromDir`, rebased for `file`'s folder.
-void savePresetRebased(const Settings& s, const std::filesystem::path& fromDir, const std::filesystem::path& file);
+// savePresetAtomic of `s`, whose references (and `schemaRef`, a "$schema" to write, "" for none)
+// are relative to `fromDir`, rebased for `file`'s folder.
+void savePresetRebased(const Settings& s, const std::filesystem::path& fromDir, const std::filesystem::path& file,
+                       const std::string& schemaRef = "");
 
 // The "$schema" a preset file names: "" when it names none or cannot be read. It carries no
 // setting (Settings has no field for it), but editors find the JSON Schema through it, so a save
