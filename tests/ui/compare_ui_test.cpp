@@ -11,7 +11,6 @@ using namespace st::test;
 
 namespace {
 
-constexpr int kKeyA = 65;
 
 class CompareUiTest : public ::testing::Test {
 protected:
@@ -21,18 +20,8 @@ protected:
         d.frames(2);
     }
     void openSweepPanel() {
-        d.click("menu.compare");
-        d.frame();
-        d.click("menu.compare.sweep");
-        d.frames(2);
+        d.chooseMenu("menu.compare", "menu.compare.sweep");
         ASSERT_TRUE(d.drawn("sweep.run"));
-    }
-    void replaceText(const char* key, const char* text) {
-        d.click(key);
-        d.pressKey(kKeyA, true);  // select all
-        d.typeText(text);
-        d.pressKey(kKeyEnter);
-        d.frames(2);
     }
     // Three grid points along cascades.count x mapSize and the "current" reference.
     static ui::SweepView doneView() {
@@ -85,10 +74,7 @@ TEST_F(CompareUiTest, SetAsASnapshotsTheSettingsAndTurnsTheSplitOn) {
 
 // Issue 21 #10: with the divider near the scene's edge a label ran under the panel ("live: 1.089").
 TEST_F(CompareUiTest, TheLabelsStayInsideTheSceneWithTheDividerAtAnEdge) {
-    d.click("menu.compare");
-    d.frame();
-    d.click("menu.compare.setA");
-    d.frames(2);
+    d.chooseMenu("menu.compare", "menu.compare.setA");
     ASSERT_TRUE(d.last.abSplit);
     const float left = d.last.scenePos.x, right = left + d.last.sceneSize.x;
     for (const float to : {right + 50.0f, left - 50.0f}) {
@@ -106,10 +92,7 @@ TEST_F(CompareUiTest, TheLabelsStayInsideTheSceneWithTheDividerAtAnEdge) {
 }
 
 TEST_F(CompareUiTest, DraggingTheDividerMovesItAndNotTheSettings) {
-    d.click("menu.compare");
-    d.frame();
-    d.click("menu.compare.setA");
-    d.frames(2);
+    d.chooseMenu("menu.compare", "menu.compare.setA");
     ASSERT_TRUE(d.last.abSplit);
     EXPECT_FLOAT_EQ(d.last.abDivider, 0.5f);
     const Settings before = d.s;
@@ -138,7 +121,7 @@ TEST_F(CompareUiTest, ThePanelsButtonsSetAAndToggleTheSplit) {
 
 TEST_F(CompareUiTest, RunSendsTheAxesAsTheSweepFileSpellsThem) {
     openSweepPanel();
-    replaceText("sweep.axis1.values", "1, 3");
+    d.replaceText("sweep.axis1.values", "1, 3");
     d.click("sweep.run");
     ASSERT_TRUE(d.last.sweepStart.has_value());
     const ui::SweepRequest& r = *d.last.sweepStart;
@@ -154,11 +137,11 @@ TEST_F(CompareUiTest, RunSendsTheAxesAsTheSweepFileSpellsThem) {
 TEST_F(CompareUiTest, BadAxisValuesAreShownAndRunIsRefused) {
     openSweepPanel();
     EXPECT_FALSE(d.drawn("sweep.errors"));
-    replaceText("sweep.axis1.values", "1, 9");  // cascades.count is 1..8
+    d.replaceText("sweep.axis1.values", "1, 9");  // cascades.count is 1..8
     EXPECT_TRUE(d.drawn("sweep.errors"));
     d.click("sweep.run");
     EXPECT_FALSE(d.last.sweepStart.has_value());
-    replaceText("sweep.axis1.values", "2");
+    d.replaceText("sweep.axis1.values", "2");
     EXPECT_FALSE(d.drawn("sweep.errors"));
     d.click("sweep.run");
     EXPECT_TRUE(d.last.sweepStart.has_value());

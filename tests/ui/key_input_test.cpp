@@ -135,7 +135,7 @@ TEST_F(SlowFrameTest, ACtrlChordTappedBetweenTwoFramesIsSeen) {
 TEST(KeyQueueTest, AModifierReleasedAfterAKeyPressWaitsForTheNextFrame) {
     app::KeyQueue q;
     bool keys[512] = {};
-    constexpr int kCtrl = 341, kKeyA = 65;
+    constexpr int kCtrl = 341;  // kKeyA: ui_driver.h
     q.push(kCtrl, true);
     EXPECT_FALSE(q.feed(keys));
     EXPECT_TRUE(keys[kCtrl]);

@@ -12,7 +12,6 @@ using namespace st::test;
 
 namespace {
 
-constexpr int kKeySelectAll = 65;  // A, with Ctrl
 
 class TuneUiTest : public ::testing::Test {
 protected:
@@ -23,18 +22,8 @@ protected:
         d.frames(2);
     }
     void openTunePanel() {
-        d.click("menu.compare");
-        d.frame();
-        d.click("menu.compare.tune");
-        d.frames(2);
+        d.chooseMenu("menu.compare", "menu.compare.tune");
         ASSERT_TRUE(d.drawn("tune.go"));
-    }
-    void replaceText(const char* key, const char* text) {
-        d.click(key);
-        d.pressKey(kKeySelectAll, true);  // select all
-        d.typeText(text);
-        d.pressKey(kKeyEnter);
-        d.frames(2);
     }
     // A finished tune that changed the count and the slope bias.
     static ui::TuneView doneView() {
@@ -73,7 +62,7 @@ TEST_F(TuneUiTest, GoSendsTheBudgetAndObjectiveThePanelShows) {
     d.frames(2);
     d.click("tune.budget.ms");
     d.frames(2);
-    replaceText("tune.ms", "30");
+    d.replaceText("tune.ms", "30");
     d.click("tune.go");
     ASSERT_TRUE(d.last.tuneStart.has_value());
     EXPECT_EQ(d.last.tuneStart->budget, ui::TuneRequest::Budget::Ms);
@@ -84,10 +73,10 @@ TEST_F(TuneUiTest, ABudgetOfNothingRefusesGo) {
     openTunePanel();
     d.click("tune.budget.mib");
     d.frames(2);
-    replaceText("tune.mib", "0");
+    d.replaceText("tune.mib", "0");
     d.click("tune.go");
     EXPECT_FALSE(d.last.tuneStart.has_value());
-    replaceText("tune.mib", "8");
+    d.replaceText("tune.mib", "8");
     d.click("tune.go");
     ASSERT_TRUE(d.last.tuneStart.has_value());
     EXPECT_DOUBLE_EQ(d.last.tuneStart->mib, 8.0);

@@ -126,4 +126,19 @@ void UiDriver::typeText(const char* text) {
     frame();
 }
 
+void UiDriver::replaceText(std::string_view key, const char* text) {
+    click(key);
+    pressKey(kKeyA, true);  // select all
+    typeText(text);
+    pressKey(kKeyEnter);
+    frames(2);
+}
+
+void UiDriver::chooseMenu(std::string_view menuKey, std::string_view itemKey) {
+    click(menuKey);
+    frame();
+    click(itemKey);
+    frames(2);
+}
+
 }  // namespace st::test

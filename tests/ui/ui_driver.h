@@ -16,6 +16,7 @@ namespace st::test {
 inline constexpr int kKeyTab = 258;
 inline constexpr int kKeyEnter = 257;
 inline constexpr int kKeyEscape = 256;
+inline constexpr int kKeyA = 65;
 inline constexpr int kKeyZ = 90;
 inline constexpr int kKeyS = 83;
 inline constexpr int kKeyF1 = 290;
@@ -49,6 +50,10 @@ public:
     void drag(ImVec2 from, ImVec2 to, int steps = 6);
     void pressKey(int key, bool ctrl = false, bool shift = false);
     void typeText(const char* text);
+    // A text field's whole content replaced: click it, Ctrl+A, type, Enter, two frames.
+    void replaceText(std::string_view key, const char* text);
+    // A menu's item chosen: click the menu `menuKey`, then its item `itemKey`, two frames.
+    void chooseMenu(std::string_view menuKey, std::string_view itemKey);
     void mouse(ImVec2 pos, bool leftDown);  // input for the following frames
     void scroll(ImVec2 pos, float wheel);   // one frame with the wheel turned over `pos`
 
