@@ -61,6 +61,31 @@ void stopChild(pid_t child) {
     ::waitpid(child, nullptr, 0);
 }
 
+bool ChildRun::start(const std::vector<std::string>& args, const fs::path& log, std::string& error) {
+    pid_ = spawnLogged(args, log, error);
+    started_ = Clock::now();
+    lastScan_ = started_ - scanInterval_;  // the first poll scans
+    return pid_ > 0;
+}
+
+void ChildRun::interrupt() const {
+    if (pid_ > 0) ::kill(pid_, SIGINT);
+}
+
+ChildRun::Poll ChildRun::poll() {
+    Poll p;
+    if (pid_ <= 0) return p;
+    int status = 0;
+    if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        p.ended = status;
+        return p;
+    }
+    const Clock::time_point now = Clock::now();
+    if (now - lastScan_ >= scanInterval_) p.scan = true, lastScan_ = now;
+    return p;
+}
+
 std::vector<std::string> lastLines(const fs::path& file, std::size_t count) {
     std::ifstream in(file);
     std::vector<std::string> lines;

@@ -1,23 +1,19 @@
 #include "app/editor/editor_sweep.h"
 
-#include "app/editor/child_run.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
 #include "report/pareto.h"
 #include "sweep/sweep_run.h"
 
-#include <signal.h>
-#include <sys/wait.h>
+#include <sys/wait.h>  // WIFEXITED
 
 #include <cmath>
 
 namespace st::app {
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
-constexpr auto kScanInterval = std::chrono::milliseconds(250);  // point files are looked for at most this often
 
 // The hover text: the figure table's Sweep-panel rows, one "label value" line each.
 std::string figureLines(const sweep::PointResult& r, const metrics::FigureTable& table) {
@@ -112,7 +108,7 @@ std::vector<ui::SweepPoint> chartPoints(const std::vector<sweep::PointResult>& r
 EditorSweep::EditorSweep(fs::path executable, int costFrames)
     : executable_(std::move(executable)), costFrames_(costFrames) {}
 
-EditorSweep::~EditorSweep() { stopChild(child_); }
+EditorSweep::~EditorSweep() = default;
 
 void EditorSweep::fail(std::vector<std::string> errors) {
     view_.state = ui::SweepView::State::Failed;
@@ -150,16 +146,13 @@ void EditorSweep::start(const ui::SweepRequest& request, const Settings& live, c
     const std::vector<std::string> args = {executable_.string(), "sweep", (dir_ / "sweep.json").string(), "--out",
                                            view_.folder, "--frames", std::to_string(costFrames_)};
     std::string error;
-    child_ = spawnLogged(args, dir_ / "log.txt", error);
-    if (child_ <= 0) return fail({error});
-    started_ = Clock::now();
-    lastScan_ = started_ - kScanInterval;
+    if (!child_.start(args, dir_ / "log.txt", error)) return fail({error});
     view_.state = ui::SweepView::State::Running;
 }
 
 void EditorSweep::cancel() {
-    if (child_ <= 0 || view_.state == ui::SweepView::State::Cancelling) return;
-    ::kill(child_, SIGINT);
+    if (!child_.running() || view_.state == ui::SweepView::State::Cancelling) return;
+    child_.interrupt();
     view_.state = ui::SweepView::State::Cancelling;
 }
 
@@ -180,7 +173,6 @@ void EditorSweep::readNewPoints() {
 }
 
 void EditorSweep::finish(int status) {
-    child_ = -1;
     readNewPoints();
     const bool cancelling = view_.state == ui::SweepView::State::Cancelling;
     // A child stopped by the cancel exits 130; 0 means it measured every point (Cancel came after
@@ -199,13 +191,11 @@ void EditorSweep::finish(int status) {
 }
 
 void EditorSweep::poll() {
-    if (child_ <= 0) return;
-    const auto now = Clock::now();
-    view_.elapsedS = std::chrono::duration<double>(now - started_).count();
-    int status = 0;
-    if (::waitpid(child_, &status, WNOHANG) == child_) return finish(status);
-    if (now - lastScan_ < kScanInterval) return;
-    lastScan_ = now;
+    if (!child_.running()) return;
+    view_.elapsedS = child_.elapsedSeconds();
+    const ChildRun::Poll p = child_.poll();
+    if (p.ended) return finish(*p.ended);
+    if (!p.scan) return;
     readNewPoints();
     if (view_.done > 0)
         view_.etaS = view_.elapsedS / double(view_.done) * double(view_.total - view_.done);

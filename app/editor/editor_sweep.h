@@ -10,12 +10,12 @@
 // Each run gets a fresh folder under $TMPDIR: base.json (the live settings, scene path made
 // absolute), current.json and A.json (references: drawn as marked points), sweep.json, log.txt
 // (the child's output) and out/ (the sweep's results and charts, kept for the user).
+#include "app/editor/child_run.h"
 #include "renderer/settings/settings.h"
 #include "sweep/sweep_results.h"
 #include "sweep/sweep_spec.h"
 #include "ui/compare_view.h"
 
-#include <sys/types.h>
 
 #include <chrono>
 #include <filesystem>
@@ -54,7 +54,7 @@ public:
     void cancel();  // SIGINT: the child stops after the point it is measuring
     void poll();    // once per frame: progress, new points, the child's end; never blocks
     const ui::SweepView& view() const { return view_; }
-    bool running() const { return child_ > 0; }
+    bool running() const { return child_.running(); }
     const std::filesystem::path& folder() const { return dir_; }
 
 private:
@@ -65,11 +65,9 @@ private:
     std::filesystem::path executable_;
     int costFrames_;
     std::filesystem::path dir_;
-    pid_t child_ = -1;
+    ChildRun child_{std::chrono::milliseconds(250)};  // its output is looked at at most this often
     std::optional<sweep::SweepSpec> spec_;
     std::optional<sweep::Manifest> manifest_;
-    std::chrono::steady_clock::time_point started_;
-    std::chrono::steady_clock::time_point lastScan_;
     std::size_t readCount_ = 0;   // point files in view_.points
     ui::SweepView view_;
 };

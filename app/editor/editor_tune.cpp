@@ -1,14 +1,12 @@
 #include "app/editor/editor_tune.h"
 
-#include "app/editor/child_run.h"
 #include "metrics/figure_table.h"
 #include "renderer/image/image_io.h"
 #include "renderer/settings/settings_json.h"
 #include "report/pareto.h"
 #include "sweep/sweep_results.h"
 
-#include <signal.h>
-#include <sys/wait.h>
+#include <sys/wait.h>  // WIFEXITED
 
 #include <algorithm>
 #include <cmath>
@@ -17,12 +15,10 @@
 
 namespace st::app {
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 using Json = nlohmann::json;
 
 namespace {
 
-constexpr auto kScanInterval = std::chrono::milliseconds(250);  // progress.json is looked at most this often
 constexpr double kMiB = 1024.0 * 1024.0;
 
 std::string fixed(double v, int decimals) {
@@ -161,7 +157,7 @@ std::vector<std::pair<std::string, std::string>> tuneObjectives() {
 
 EditorTune::EditorTune(fs::path executable) : executable_(std::move(executable)) {}
 
-EditorTune::~EditorTune() { stopChild(child_); }
+EditorTune::~EditorTune() = default;
 
 void EditorTune::fail(std::vector<std::string> errors) {
     view_.state = ui::TuneView::State::Failed;
@@ -197,16 +193,13 @@ void EditorTune::start(const ui::TuneRequest& request, const Settings& live, con
     std::vector<std::string> args = tuneArguments(request, dir_, a.has_value());
     args.insert(args.begin(), executable_.string());
     std::string error;
-    child_ = spawnLogged(args, dir_ / "log.txt", error);
-    if (child_ <= 0) return fail({error});
-    started_ = Clock::now();
-    lastScan_ = started_ - kScanInterval;
+    if (!child_.start(args, dir_ / "log.txt", error)) return fail({error});
     view_.state = ui::TuneView::State::Running;
 }
 
 void EditorTune::cancel() {
-    if (child_ <= 0 || view_.state == ui::TuneView::State::Cancelling) return;
-    ::kill(child_, SIGINT);
+    if (!child_.running() || view_.state == ui::TuneView::State::Cancelling) return;
+    child_.interrupt();
     view_.state = ui::TuneView::State::Cancelling;
 }
 
@@ -222,7 +215,6 @@ void EditorTune::readProgress() {
 }
 
 void EditorTune::finish(int status) {
-    child_ = -1;
     readProgress();
     const bool cancelling = view_.state == ui::TuneView::State::Cancelling;
     const fs::path out = view_.folder;
@@ -242,13 +234,11 @@ void EditorTune::finish(int status) {
 }
 
 void EditorTune::poll() {
-    if (child_ <= 0) return;
-    const auto now = Clock::now();
-    view_.elapsedS = std::chrono::duration<double>(now - started_).count();
-    int status = 0;
-    if (::waitpid(child_, &status, WNOHANG) == child_) return finish(status);
-    if (now - lastScan_ < kScanInterval) return;
-    lastScan_ = now;
+    if (!child_.running()) return;
+    view_.elapsedS = child_.elapsedSeconds();
+    const ChildRun::Poll p = child_.poll();
+    if (p.ended) return finish(*p.ended);
+    if (!p.scan) return;
     readProgress();
 }
 

@@ -8,11 +8,11 @@
 // Each run gets a fresh folder under $TMPDIR: base.json (the live settings, scene path made
 // absolute), current.json (the budget "as cheap as now"), A.json (drawn on the front), log.txt
 // (the child's output) and out/ (the tune's outputs, kept for the user).
+#include "app/editor/child_run.h"
 #include "renderer/settings/settings.h"
 #include "ui/tune_view.h"
 
 #include <nlohmann/json.hpp>
-#include <sys/types.h>
 
 #include <chrono>
 #include <filesystem>
@@ -52,7 +52,7 @@ public:
     void cancel();  // SIGINT: the child stops after the evaluation under way
     void poll();    // once per frame; never blocks
     const ui::TuneView& view() const { return view_; }
-    bool running() const { return child_ > 0; }
+    bool running() const { return child_.running(); }
 
 private:
     void fail(std::vector<std::string> errors);
@@ -61,8 +61,7 @@ private:
 
     std::filesystem::path executable_;
     std::filesystem::path dir_;
-    pid_t child_ = -1;
-    std::chrono::steady_clock::time_point started_, lastScan_;
+    ChildRun child_{std::chrono::milliseconds(250)};  // its output is looked at at most this often
     std::filesystem::file_time_type progressTime_{};
     ui::TuneView view_;
 };
