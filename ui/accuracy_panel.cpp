@@ -50,10 +50,17 @@ void countsRow(int cascade, const char* label, const AccuracyCounts& c) {
 
 void cascadeTable(UiFrame& f) {
     const AccuracyView& a = f.in.accuracy;
-    constexpr ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("accuracyCascades", 7, flags)) return;
+    // Wider than a narrow panel (1000x700 clipped its headers to "fal" and "g f"): it scrolls
+    // sideways, which needs its height given: the rows, the header and the scrollbar.
+    constexpr ImGuiTableFlags flags =
+        ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const int rows = static_cast<int>(a.cascades.size()) + (a.beyond.receivers > 0 ? 1 : 0) + 1;
+    const float height = float(rows) * (ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y) + style.ScrollbarSize + 2.0f;
+    if (!ImGui::BeginTable("accuracyCascades", 7, flags, {0.0f, height})) return;
     for (const char* name : {"", "sun-facing px", "misclass.", "false shadow", "false light", "gross px", "filtered"})
         ImGui::TableSetupColumn(name);
+    ImGui::TableSetupScrollFreeze(1, 0);  // the cascade's swatch stays while the figures scroll
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < a.cascades.size(); ++i) countsRow(static_cast<int>(i), "", a.cascades[i]);
     if (a.beyond.receivers > 0) countsRow(-1, "beyond", a.beyond);
