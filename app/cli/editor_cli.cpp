@@ -33,7 +33,7 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");
     editor->callback([opt, preset, &exitCode] {
         if (!preset->empty()) opt->preset = *preset;
-        opt->presetDir = defaultPresetDir();
+        opt->presetDir = defaultPresetDir(opt->preset.value_or(std::filesystem::path()));
         exitCode = runEditor(*opt);
     });
 }

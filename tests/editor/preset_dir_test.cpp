@@ -39,3 +39,15 @@ TEST_F(PresetDirTest, NeitherGivesTheRelativeDefault) {
     EXPECT_EQ(presetDirFor(root / "cwd", exe()), fs::path("presets"));
     EXPECT_EQ(presetDirFor(root / "cwd", fs::path()), fs::path("presets"));
 }
+
+// A scenario preset opened by its path from another folder listed "(no presets found)".
+TEST_F(PresetDirTest, APresetOpenedFromElsewhereListsThePresetsFolderHoldingIt) {
+    fs::create_directories(root / "repo/presets/scenarios");
+    fs::create_directories(installed());
+    EXPECT_EQ(presetDirFor(root / "cwd", exe(), root / "repo/presets/scenarios/x.json"), root / "repo/presets");
+    EXPECT_EQ(presetDirFor(root / "repo/presets", exe(), "scenarios/x.json"), root / "repo/presets") << "relative to cwd";
+    EXPECT_EQ(presetDirFor(root / "cwd", exe(), root / "elsewhere/x.json"), installed()) << "no presets folder above it";
+    fs::create_directories(root / "cwd/presets");
+    EXPECT_EQ(presetDirFor(root / "cwd", exe(), root / "repo/presets/scenarios/x.json"), fs::path("presets"))
+        << "the current folder's presets still come first";
+}
