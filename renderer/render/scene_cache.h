@@ -52,6 +52,8 @@ public:
         return *entryFor(s, presetDir).renderer;
     }
 
+    std::size_t size() const { return entries_.size(); }  // scenes loaded and kept
+
 private:
     std::map<std::string, Entry> entries_;  // a map: entries stay put while others are added
     bool keepOne_ = false;

@@ -14,6 +14,24 @@ namespace {
 
 class CalibrationGLTest : public test::GLTest {};
 
+// calibrate keeps one scene in the context at a time: on llvmpipe another scene's renderer left
+// alive slowed truck-town's frames by 25-45 % (docs/cost-model.md).
+TEST_F(CalibrationGLTest, AKeepOneCacheDropsTheOtherSceneAndItsRenderer) {
+    const Settings yard = test::presetAtTestSize("default", 160, 90);
+    Settings box = yard;
+    box.scene = "builtin:box-over-plane";
+    SceneCache<> keepAll, keepOne(true);
+    for (SceneCache<>* cache : {&keepAll, &keepOne}) {
+        cache->rendererFor(yard, ST_PRESET_DIR);
+        cache->rendererFor(yard, ST_PRESET_DIR);  // the same scene: kept
+        EXPECT_EQ(cache->size(), 1u);
+        cache->rendererFor(box, ST_PRESET_DIR);
+    }
+    EXPECT_EQ(keepAll.size(), 2u);
+    EXPECT_EQ(keepOne.size(), 1u);
+    keepOne.rendererFor(box, ST_PRESET_DIR).render(box);  // the kept one still draws
+}
+
 TEST_F(CalibrationGLTest, TimedFramesRedrawEveryMapAndSamplesArePerPass) {
     const Settings s = test::presetAtTestSize("default", 160, 90);
     SceneCache<> scenes;
