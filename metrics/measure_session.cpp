@@ -142,6 +142,25 @@ std::vector<float> texelWorldSizes(const csm::CascadePlan& plan) {
 }
 }  // namespace
 
+namespace {
+// MeasureOptions::shadeMain off: the renderer's main pass unshaded while this lives.
+class UnshadedMain {
+public:
+    UnshadedMain(Renderer& r, bool on) : r_(r), was_(r.options()) {
+        RenderOptions o = was_;
+        o.shadeMain = was_.shadeMain && !on;
+        r_.setOptions(o);
+    }
+    ~UnshadedMain() { r_.setOptions(was_); }
+    UnshadedMain(const UnshadedMain&) = delete;
+    UnshadedMain& operator=(const UnshadedMain&) = delete;
+
+private:
+    Renderer& r_;
+    RenderOptions was_;
+};
+}  // namespace
+
 SunDisc sunDisc(const Settings& s) { return {s.light.angularDiameter, s.measure.sunRays, kSunDiscSeed}; }
 
 // Truth, accuracy and texel density of the frame `s` shows: everything but cost and flicker.
@@ -180,7 +199,10 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
         m.timings.bvhMs = e.truth->buildMs();
     }
     Renderer& r = opt.renderer ? *opt.renderer : *e.renderer;
-    measureStill(e, r, pass(), s, m);
+    {
+        const UnshadedMain unshaded(r, !opt.shadeMain);
+        measureStill(e, r, pass(), s, m);
+    }
     m.warnings = zExtensionWarnings(m.frame);
     const std::optional<float> farthest = farthestSampleDepth(m.samples, r.plan().vsView);
     for (std::string& w : wastedMapWarnings(s, m.frame, m.density, farthest, opt.warningLimits))
@@ -200,6 +222,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     }
     if (opt.flicker && s.path.frames > 0) {
         const auto t0 = Clock::now();
+        const UnshadedMain unshaded(r, !opt.shadeMain);
         m.flicker = measureFlicker(r, pass(), s, &m.flickerStdDev, m.truth);
         m.timings.flickerMs = msSince(t0);
         report(opt, "flicker over " + std::to_string(s.path.frames) + " frames " + seconds(m.timings.flickerMs));

@@ -70,6 +70,10 @@ struct MeasureOptions {
     // tune keeps one per view, so each view's maps stay drawn for candidates that differ only in
     // what the maps do not hold (filter, bias), instead of being redrawn at every change of view.
     Renderer* renderer = nullptr;
+    // Off: the frames measured for the figures (the still and the path's) skip the main pass's
+    // shading (RenderOptions::shadeMain): the figures come from the measurement pass and the
+    // counted work is the same. Timed cost frames are always shaded.
+    bool shadeMain = true;
 };
 
 // The observer's world -> clip matrix: the preset camera at the output's aspect.

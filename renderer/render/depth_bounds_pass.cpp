@@ -41,7 +41,8 @@ gpu::Program linkCompute(const std::string& file) {
 
 }  // namespace
 
-DepthBoundsPass::DepthBoundsPass() : program_(linkCompute("depth_bounds_comp.glsl")) {
+DepthBoundsPass::DepthBoundsPass()
+    : program_(sharedProgram("depth_bounds_comp.glsl", [] { return linkCompute("depth_bounds_comp.glsl"); })) {
     result_ = gpu::createBuffer(nullptr, sizeof(Result), GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -55,7 +56,7 @@ DepthBoundsPass::Result DepthBoundsPass::run(GLuint depth, const gpu_if::ReduceB
     block_.bind(ST_BLOCK_REDUCE);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ST_STORAGE_REDUCE, result_.id());
     glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, depth);
-    glUseProgram(program_.id());
+    glUseProgram(program_->id());
     glDispatchCompute(GLuint((block.reduceWidth + kGroupTexels - 1) / kGroupTexels),
                       GLuint((block.reduceHeight + kGroupTexels - 1) / kGroupTexels), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

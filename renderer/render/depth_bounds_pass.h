@@ -4,6 +4,7 @@
 // the cascades of the same frame use it (no frame of latency).
 #include "renderer/csm/depth_bounds.h"
 #include "renderer/gpu/gl.h"
+#include "renderer/render/shader_library.h"
 #include "renderer/gpu/uniform_buffer.h"
 #include "shaders/interface.h"
 
@@ -31,7 +32,7 @@ public:
 private:
     struct Result;
     Result run(GLuint depth, const gpu_if::ReduceBlock& block);
-    gpu::Program program_;
+    SharedProgram program_;
     gpu::Buffer result_;
     gpu::UniformBuffer<gpu_if::ReduceBlock> block_;
 };

@@ -9,7 +9,7 @@
 
 namespace st {
 MeasurePass::MeasurePass() {
-    program_ = linkShaderFiles("main.vert", "measure.frag", "measure");
+    program_ = sharedShaderProgram("main.vert", "measure.frag", "measure");
 }
 
 void MeasurePass::ensureTargets(int width, int height) {
@@ -48,7 +48,7 @@ void MeasurePass::draw(const Renderer& r, const Settings& s, const glm::mat4& ob
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
     const float far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
-    glUseProgram(program_.id());
+    glUseProgram(program_->id());
     gpu_if::ViewBlock v;
     v.viewProj = observerViewProj;
     v.screenShadow = screen ? 1 : 0;

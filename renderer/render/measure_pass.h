@@ -3,6 +3,7 @@
 // position, normal, the unfiltered and the filtered shadow result, the cascade and the texel
 // density into float targets (shaders/measure.frag), then read back for the metrics.
 #include "renderer/gpu/gl.h"
+#include "renderer/render/shader_library.h"
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/measure_samples.h"
 #include "renderer/render/renderer.h"
@@ -37,7 +38,7 @@ private:
     void drawScene(const Renderer& r) const;
     std::vector<glm::vec4> read(const gpu::Texture& texture) const;
 
-    gpu::Program program_;
+    SharedProgram program_;
     gpu::Texture targets_[4];  // position, normal, shadow, geometry (RGBA32F)
     gpu::Texture depth_;
     gpu::Framebuffer fbo_;

@@ -44,8 +44,8 @@ std::size_t momentMapBytes(FilterKind kind, bool sixteenBit, bool mipmaps, int l
 }
 
 MomentMaps::MomentMaps() {
-    makeProgram_ = linkShaderFiles("fullscreen.vert", "moments_make.frag", "moments_make");
-    blurProgram_ = linkShaderFiles("fullscreen.vert", "moments_blur.frag", "moments_blur");
+    makeProgram_ = sharedShaderProgram("fullscreen.vert", "moments_make.frag", "moments_make");
+    blurProgram_ = sharedShaderProgram("fullscreen.vert", "moments_blur.frag", "moments_blur");
     emptyVao_ = gpu::createVertexArray();
     fbo_ = gpu::createFramebuffer();
     raw_ = momentSampler(GL_NEAREST);
@@ -97,10 +97,10 @@ void MomentMaps::build(const ShadowMaps& depth, const Settings& s) {
         overlay_.upload(b);
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, scratch_.id(), 0);
         glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
-        glUseProgram(makeProgram_.id());
+        glUseProgram(makeProgram_->id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, moments_.id(), 0, i);
-        glUseProgram(blurProgram_.id());
+        glUseProgram(blurProgram_->id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     // The scratch texture is a framebuffer attachment no more once the last layer is written.

@@ -4,6 +4,7 @@
 // texel blurred along x into a float scratch texture, then along y into the layer: a separable
 // Gaussian, seed 004 "VSMs with CSMs"), then optionally mipmapped. Array layout only.
 #include "renderer/gpu/gl.h"
+#include "renderer/render/shader_library.h"
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/pass_work.h"
 #include "renderer/render/shadow_maps.h"
@@ -46,8 +47,8 @@ public:
 
 private:
     void ensure(const Settings& s, int layers, int size);
-    gpu::Program makeProgram_;
-    gpu::Program blurProgram_;
+    SharedProgram makeProgram_;
+    SharedProgram blurProgram_;
     gpu::VertexArray emptyVao_;
     gpu::Framebuffer fbo_;
     gpu::Texture moments_;

@@ -44,8 +44,9 @@ csm::CascadePlan sampledPlan(const Settings& s, const csm::CascadePlan& plan, co
 }  // namespace
 
 Renderer::Renderer(const Scene& scene) : scene_(scene) {
-    depthProgram_ = linkShaderFiles("shadow_depth.vert", "shadow_depth.frag", "shadow_depth");
-    mainProgram_ = linkShaderFiles("main.vert", "main.frag", "main");
+    depthProgram_ = sharedShaderProgram("shadow_depth.vert", "shadow_depth.frag", "shadow_depth");
+    mainProgram_ = sharedShaderProgram("main.vert", "main.frag", "main");
+    coverageProgram_ = sharedShaderProgram("main.vert", "main_coverage.frag", "main coverage");
 }
 
 FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
@@ -169,7 +170,7 @@ csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
     state.colorWrite = false;
     gpu::applyPassState(state);
     glClear(GL_DEPTH_BUFFER_BIT);
-    glUseProgram(depthProgram_.id());
+    glUseProgram(depthProgram_->id());
     viewBlock_.upload({proj * csm::viewMatrix(cam)});
     viewBlock_.bind(ST_BLOCK_VIEW);
     drawVisible(proj * csm::viewMatrix(cam));  // culled and batched, as the main pass will draw it
@@ -228,7 +229,7 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
     state.cullFace = GL_NONE;  // thin and open casters must cast from both sides
     state.depthClamp = pancake;
     state.colorWrite = false;  // depth only
-    glUseProgram(depthProgram_.id());
+    glUseProgram(depthProgram_->id());
     if (options_.naive) scene_.bindGeometry();
     else scene_.bindClusteredGeometry();
     frameBlock_.bind(ST_BLOCK_FRAME);
@@ -321,7 +322,9 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     gpu::applyPassState(gpu::opaqueScenePass(target.framebuffer(), target.width(), target.height()));
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(mainProgram_.id());
+    // Only the main camera's frame may go unshaded: the side view is an image to look at.
+    const bool shade = options_.shadeMain || &target != &target_ || s.output.view == View::Side;
+    glUseProgram(shade ? mainProgram_->id() : coverageProgram_->id());
     gpu_if::ViewBlock v;
     v.viewProj = viewProj;
     v.screenShadow = screen ? 1 : 0;

@@ -4,6 +4,7 @@
 // the pixels back, the editor blits or shows the texture.
 #include "renderer/csm/cascade_plan.h"
 #include "renderer/gpu/gl.h"
+#include "renderer/render/shader_library.h"
 #include "renderer/gpu/pass_state.h"
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/cascade_cache.h"
@@ -39,6 +40,11 @@ struct RenderOptions {
     bool cacheMaps = true;
     // Count FrameStats' lowerBoundTriangles (per triangle, on the CPU, when a map is redrawn).
     bool lowerBound = true;
+    // Off: the main pass draws its coverage only (shaders/main_coverage.frag: the alpha test, no
+    // shadow filtering or lighting). The counted work (FrameStats::work) stays the same, the image
+    // does not: for a caller that reads its figures from the measurement pass (a tune's
+    // evaluation), it saves a filtered shading of every fragment.
+    bool shadeMain = true;
 };
 
 class Renderer {
@@ -105,8 +111,9 @@ private:
     // own counts (pass_work.h).
     void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats);
     SceneGpu scene_;
-    gpu::Program depthProgram_;
-    gpu::Program mainProgram_;
+    SharedProgram depthProgram_;
+    SharedProgram mainProgram_;
+    SharedProgram coverageProgram_;  // RenderOptions::shadeMain off
     ShadowMaps shadowMaps_;
     MomentMaps moments_;
     std::unique_ptr<ScreenShadow> screen_;  // on first use

@@ -33,11 +33,11 @@ std::size_t screenShadowBytes(int width, int height, int n) {
 }
 
 ScreenShadow::ScreenShadow() {
-    maskProgram_ = linkShaderFiles("main.vert", "screen_mask.frag", "screen_mask");
-    downProgram_ = linkShaderFiles("fullscreen.vert", "screen_down.frag", "screen_down");
-    blurProgram_ = linkShaderFiles("fullscreen.vert", "screen_blur.frag", "screen_blur");
-    upProgram_ = linkShaderFiles("fullscreen.vert", "screen_up.frag", "screen_up");
-    contactProgram_ = linkShaderFiles("fullscreen.vert", "screen_contact.frag", "screen_contact");
+    maskProgram_ = sharedShaderProgram("main.vert", "screen_mask.frag", "screen_mask");
+    downProgram_ = sharedShaderProgram("fullscreen.vert", "screen_down.frag", "screen_down");
+    blurProgram_ = sharedShaderProgram("fullscreen.vert", "screen_blur.frag", "screen_blur");
+    upProgram_ = sharedShaderProgram("fullscreen.vert", "screen_up.frag", "screen_up");
+    contactProgram_ = sharedShaderProgram("fullscreen.vert", "screen_contact.frag", "screen_contact");
     emptyVao_ = gpu::createVertexArray();
     maskFbo_ = gpu::createFramebuffer();
     passFbo_ = gpu::createFramebuffer();
@@ -98,7 +98,7 @@ void ScreenShadow::build(const Settings& s, const glm::mat4& viewProj, int width
         glClearNamedFramebufferfv(maskFbo_.id(), GL_COLOR, 0, clear);
         const float far = 1.0f;
         glClearNamedFramebufferfv(maskFbo_.id(), GL_DEPTH, 0, &far);
-        glUseProgram(maskProgram_.id());
+        glUseProgram(maskProgram_->id());
         gpu_if::ViewBlock v;
         v.viewProj = viewProj;
         view_.upload(v);  // screenShadow 0: the mask filters the maps itself
@@ -134,15 +134,15 @@ void ScreenShadow::blur(const FilterSettings& f) {
     b.screenDepthSigma = f.screenDepthSigma;
     const int lw = screenLowSize(width_, n_), lh = screenLowSize(height_, n_);
     block_.upload(b);
-    fullscreen(low_[0].id(), lw, lh, mask_.id(), downProgram_);
+    fullscreen(low_[0].id(), lw, lh, mask_.id(), *downProgram_);
     b.screenAxis = 0;
     block_.upload(b);
-    fullscreen(low_[1].id(), lw, lh, low_[0].id(), blurProgram_);
+    fullscreen(low_[1].id(), lw, lh, low_[0].id(), *blurProgram_);
     b.screenAxis = 1;
     block_.upload(b);
-    fullscreen(low_[0].id(), lw, lh, low_[1].id(), blurProgram_);
+    fullscreen(low_[0].id(), lw, lh, low_[1].id(), *blurProgram_);
     glBindTextureUnit(ST_BINDING_SCREEN_FULL, mask_.id());
-    fullscreen(result_.id(), width_, height_, low_[0].id(), upProgram_);
+    fullscreen(result_.id(), width_, height_, low_[0].id(), *upProgram_);
 }
 
 void ScreenShadow::march(const Settings& s, const glm::mat4& viewProj, GLuint mapFactor) {
@@ -158,7 +158,7 @@ void ScreenShadow::march(const Settings& s, const glm::mat4& viewProj, GLuint ma
     glBindTextureUnit(ST_BINDING_SCREEN_FULL, mask_.id());
     glBindTextureUnit(ST_BINDING_SCREEN_DEPTH, depth_.id());
     glBindSampler(ST_BINDING_SCREEN_DEPTH, 0);
-    fullscreen(contact_.id(), width_, height_, mapFactor, contactProgram_);
+    fullscreen(contact_.id(), width_, height_, mapFactor, *contactProgram_);
 }
 
 std::size_t ScreenShadow::bytes() const {

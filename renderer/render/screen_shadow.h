@@ -7,6 +7,7 @@
 // relative depth difference weights every tap of the downsample, the blur and the upsample, so
 // a near occluder's shadow does not bleed onto the background across a silhouette.
 #include "renderer/gpu/gl.h"
+#include "renderer/render/shader_library.h"
 #include "renderer/gpu/uniform_buffer.h"
 #include "renderer/render/gpu_timer.h"
 #include "renderer/render/pass_work.h"
@@ -79,11 +80,11 @@ private:
     void blur(const FilterSettings& f);
     void march(const Settings& s, const glm::mat4& viewProj, GLuint mapFactor);
     void fullscreen(GLuint target, int width, int height, GLuint source, const gpu::Program& program);
-    gpu::Program maskProgram_;
-    gpu::Program downProgram_;
-    gpu::Program blurProgram_;
-    gpu::Program upProgram_;
-    gpu::Program contactProgram_;
+    SharedProgram maskProgram_;
+    SharedProgram downProgram_;
+    SharedProgram blurProgram_;
+    SharedProgram upProgram_;
+    SharedProgram contactProgram_;
     gpu::VertexArray emptyVao_;
     gpu::Framebuffer maskFbo_;
     gpu::Framebuffer passFbo_;

@@ -105,4 +105,17 @@ gpu::Program linkShaderFiles(const std::string& vertexFile, const std::string& f
     }
 }
 
+SharedProgram sharedProgram(const std::string& key, const std::function<gpu::Program()>& link) {
+    thread_local std::map<std::string, std::weak_ptr<const gpu::Program>> live;
+    if (SharedProgram p = live[key].lock()) return p;
+    SharedProgram p = std::make_shared<const gpu::Program>(link());
+    live[key] = p;
+    return p;
+}
+
+SharedProgram sharedShaderProgram(const std::string& vertexFile, const std::string& fragmentFile, const std::string& name) {
+    return sharedProgram(vertexFile + "|" + fragmentFile + "|" + name,
+                         [&] { return linkShaderFiles(vertexFile, fragmentFile, name); });
+}
+
 }  // namespace st

@@ -3,7 +3,9 @@
 // #line directives emitted, so a compile error names the file and line it is in.
 #include "renderer/gpu/gl.h"
 
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,5 +31,16 @@ std::string nameLogFiles(const std::string& log, const std::vector<std::string>&
 // file and line of every compile error.
 gpu::Program linkShaderFiles(const std::string& vertexFile, const std::string& fragmentFile,
                              const std::string& name, const ShaderSources& sources = embeddedShaders());
+
+// A program linked once and shared by every renderer and pass of the current context that asks
+// for the same files while one of them holds it. Why: llvmpipe JIT-compiles shader variants per
+// program object and keeps a bounded number of instructions per context; several renderers each
+// linking main.frag (a tune keeps one per view) pushed the variants past that bound, so they were
+// evicted and recompiled frame after frame (docs/tuning.md#speed). Programs are per thread, as a
+// context is current on one thread; a thread must not switch contexts while it holds programs.
+using SharedProgram = std::shared_ptr<const gpu::Program>;
+SharedProgram sharedShaderProgram(const std::string& vertexFile, const std::string& fragmentFile, const std::string& name);
+// The same for a program `link` makes (a compute program), keyed by `key`.
+SharedProgram sharedProgram(const std::string& key, const std::function<gpu::Program()>& link);
 
 }  // namespace st

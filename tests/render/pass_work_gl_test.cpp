@@ -243,3 +243,32 @@ TEST_F(PassWorkGLTest, SamplesPassedShowOverdrawThatFragmentsDoNot) {
     EXPECT_LE(backToFront.samplesPassed, backToFront.fragments);
     EXPECT_GT(backToFront.samplesPassed, frontToBack.samplesPassed);
 }
+
+// RenderOptions::shadeMain off (what a tune's evaluation draws): the main pass draws coverage
+// only, so the image is not the shaded one, but the counted work is the same to the count, with
+// a hard and a wide filter, and with a masked sheet whose every fragment is discarded in front
+// of an opaque one.
+TEST_F(PassWorkGLTest, AnUnshadedMainPassCountsTheSameWork) {
+    Scene scene = sheetStack(2);
+    scene.materials.push_back(Material{.baseColor = {0.2f, 0.9f, 0.2f, 0.2f}, .alphaMask = true, .doubleSided = true});
+    scene.draws[0].material = 1;  // the nearer sheet: alpha 0.2 under the cutoff 0.5
+    Renderer r(scene);
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.position = {0.3f, 0.2f, 6.0f};
+    s.camera.target = {0.0f, 0.0f, -1.0f};
+    s.camera.nearPlane = 0.3f;
+    s.camera.farPlane = 60.0f;
+    for (FilterKind kind : {FilterKind::Hard, FilterKind::PcfNxN}) {
+        s.filter.kind = kind;
+        r.setOptions({});
+        const FrameStats shaded = redrawn(r, s);
+        const std::vector<std::uint8_t> image = r.readRgba8();
+        r.setOptions(RenderOptions{.shadeMain = false});
+        const FrameStats unshaded = redrawn(r, s);
+        EXPECT_EQ(shaded.work, unshaded.work) << "filter " << int(kind);
+        EXPECT_GT(shaded.work.main.fragments, shaded.work.main.samplesPassed) << "the masked sheet's fragments ran and were discarded";
+        EXPECT_NE(r.readRgba8(), image) << "unshaded, the image is not the shaded one";
+    }
+}
