@@ -84,22 +84,19 @@ vec2 tapUv(int i, vec2 uv) {
 }
 
 // Storage "textures": GLSL 4.50 indexes an array of samplers only with a dynamically uniform
-// expression, and the cascade index varies from pixel to pixel, so each case names its sampler by
-// a constant. Explicit zero gradients: the call sits in non-uniform control flow, where implicit
-// derivatives are undefined (the maps have one level, so the lod is 0 anyway).
+// expression, and the cascade index varies from pixel to pixel, so the sampler is named by a loop
+// counter (uniform) and only the pixel's own cascade keeps its result. A SIMD shader without
+// branches that skip (llvmpipe) issues every iteration's read: cascadeCount reads per tap, which
+// renderer/csm/filter_taps.h counts. A switch over all ST_MAX_CASCADES samplers issued eight,
+// whatever the count (ogldev-49's 3 maps: main pass ~25 % slower than the array's).
+// Explicit zero gradients: the call sits in non-uniform control flow, where implicit derivatives
+// are undefined (the maps have one level, so the lod is 0 anyway).
 float ownMapCompare(int i, vec4 p) {
     const vec2 g = vec2(0.0);
-    switch (i) {
-        case 0: return textureGrad(uCascadeMaps[0], p, g, g);
-        case 1: return textureGrad(uCascadeMaps[1], p, g, g);
-        case 2: return textureGrad(uCascadeMaps[2], p, g, g);
-        case 3: return textureGrad(uCascadeMaps[3], p, g, g);
-        case 4: return textureGrad(uCascadeMaps[4], p, g, g);
-        case 5: return textureGrad(uCascadeMaps[5], p, g, g);
-        case 6: return textureGrad(uCascadeMaps[6], p, g, g);
-        case 7: return textureGrad(uCascadeMaps[7], p, g, g);
-    }
-    return 1.0;
+    float result = 1.0;
+    for (int k = 0; k < cascadeCount; ++k)
+        if (k == i) result = textureGrad(uCascadeMaps[k], p, g, g);
+    return result;
 }
 
 // One compare of cascade i at uv (its texture's coordinates), nearest or 2x2 linear.

@@ -298,7 +298,7 @@ private:
                 const std::optional<Evaluation> mine = journal_->find(screenSize(s), "screen");
                 if (!mine || !fromScreen) continue;
                 const Evaluation a = judge(*mine, objective_), b = judge(*fromScreen, objective_);
-                if (!a.valid || !b.valid || a.error >= b.error) continue;
+                if (!a.valid || !b.valid || !worthFullEvaluation(a, b, at, budget_)) continue;
             }
             measured(s, "tuned", false);
             return true;

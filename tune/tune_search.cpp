@@ -66,23 +66,24 @@ public:
     bool worthEvaluating(const Settings& s, std::size_t cur) {
         if (!opt_.screen || !at(cur).feasible) return true;
         if (out_.screenings >= kScreensPerEvaluation * opt_.evaluations) return true;
-        const std::optional<double> mine = screened(s), theirs = screened(at(cur).settings);
+        const std::optional<Evaluation> mine = screened(s), theirs = screened(at(cur).settings);
         if (!mine || !theirs) return true;
-        if (*mine < *theirs) return true;
+        if (worthFullEvaluation(*mine, *theirs, at(cur).eval, opt_.budget)) return true;
         ++out_.screenedOut;
         return false;
     }
 
-    std::optional<double> screened(const Settings& s) {
+    // The screen of `s` (none: settings the validator or the screen refuses).
+    std::optional<Evaluation> screened(const Settings& s) {
         const std::string key = toOrderedJson(s).dump();
         if (const auto it = screens_.find(key); it != screens_.end()) return it->second;
         if (!validate(s).empty()) return std::nullopt;
         if (opt_.stopRequested && opt_.stopRequested()) return std::nullopt;  // visit() stops the search next
-        const Evaluation e = opt_.screen(s);
+        Evaluation e = opt_.screen(s);
         ++out_.screenings;
-        const std::optional<double> error = e.valid ? std::optional<double>(e.error) : std::nullopt;
-        screens_.emplace(key, error);
-        return error;
+        const std::optional<Evaluation> valid = e.valid ? std::optional<Evaluation>(std::move(e)) : std::nullopt;
+        screens_.emplace(key, valid);
+        return valid;
     }
 
     SearchResult run(const std::vector<Settings>& starts) {
@@ -95,7 +96,9 @@ public:
         int idleRestarts = 0;
         while (cur && idleRestarts < 20) {
             const int before = fresh_;
-            std::optional<std::size_t> next = descend(*cur);
+            std::optional<std::size_t> next = descend(*cur, false);
+            if (!next) return finish();
+            if (*next == *cur) next = descend(*cur, true);
             if (!next) return finish();
             if (*next == *cur) next = pairMove(*cur);
             if (!next) return finish();
@@ -125,11 +128,13 @@ private:
         return d.path + " " + text(currentValue(from, d)) + " -> " + text(d.values[j]);
     }
 
-    // One round over the dimensions in a seeded order; the first neighbour better than the current
-    // point is taken. Returns the point reached (== cur when nothing was better).
-    std::optional<std::size_t> descend(std::size_t cur) {
-        std::vector<std::size_t> order(space_.dims.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    // One round over the dimensions (the refinements, or the others) in a seeded order; the first
+    // neighbour better than the current point is taken. Returns the point reached (== cur when
+    // nothing was better).
+    std::optional<std::size_t> descend(std::size_t cur, bool refinements) {
+        std::vector<std::size_t> order;
+        for (std::size_t i = 0; i < space_.dims.size(); ++i)
+            if (space_.dims[i].refinement == refinements) order.push_back(i);
         std::shuffle(order.begin(), order.end(), rng_);
         if (opt_.plan) opt_.plan(at(cur).settings, neighbours(at(cur).settings, order));
         for (std::size_t di : order) {
@@ -215,12 +220,23 @@ private:
     const SearchOptions& opt_;
     std::mt19937_64 rng_;
     std::map<std::string, std::size_t> seen_;
-    std::map<std::string, std::optional<double>> screens_;  // settings -> screened error (none: invalid)
+    std::map<std::string, std::optional<Evaluation>> screens_;  // settings -> screen (none: invalid)
     SearchResult out_;
     int fresh_ = 0;  // evaluations made (restarts that found only known points do not count)
 };
 
 }  // namespace
+
+bool worthFullEvaluation(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull,
+                         const Budget& budget) {
+    if (!(mine.error < fromScreen.error)) return false;
+    if (budget.bytes && mine.mapBytes > *budget.bytes) return false;
+    if (budget.ms && fromScreen.costMs > 0.0) {
+        const double predicted = fromFull.costMs * mine.costMs / fromScreen.costMs;
+        if (predicted > *budget.ms * (1.0 + kScreenCostSlack)) return false;
+    }
+    return true;
+}
 
 bool Budget::fits(const Evaluation& e) const {
     return (!ms || e.costMs <= *ms) && (!bytes || e.mapBytes <= *bytes);

@@ -73,6 +73,18 @@ struct SearchOptions {
 
 inline constexpr int kScreensPerEvaluation = 6;
 
+// The second rung's rule: a neighbour screened as `mine`, of a point `from` within the budget
+// (evaluated in full as `fromFull`, screened as `fromScreen`), is worth a full evaluation when it
+// screens better and its full cost, predicted from the screens' ratio, stays within the budget:
+// modelled cost times mine.costMs / fromScreen.costMs at most kScreenCostSlack over the budget's
+// milliseconds, and map memory (the same at any output size) within its bytes. Without the cost
+// test, a map-size or count move up from a point at the budget's edge screened better (bigger
+// maps are) and spent a full evaluation to learn it was over the budget: 23 of 60 evaluations of
+// truck-town's tune at ogldev-49's budget.
+inline constexpr double kScreenCostSlack = 0.03;
+bool worthFullEvaluation(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull,
+                         const Budget& budget);
+
 struct SearchResult {
     std::vector<Candidate> evaluated;  // every distinct point, in the order first evaluated
     std::optional<std::size_t> best;   // the best feasible, if any

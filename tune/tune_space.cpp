@@ -1,5 +1,6 @@
 #include "tune/tune_space.h"
 
+#include "renderer/csm/splits.h"
 #include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/kind_descriptors.h"
@@ -7,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <optional>
 
 namespace st::tune {
@@ -66,6 +69,17 @@ Space defaultSpace(const Settings& base) {
     add("cascades.stabilize", list({false, true}));
     add("cascades.mapSize", list({256, 512, 1024, 2048, 4096}));
     add("cascades.storage", enumValues("cascades.storage"));
+    // Per cascade: a map size (atlas and textures storage) and each split depth, as shares of the
+    // far plane on a roughly geometric ladder (splits crowd near the camera).
+    std::vector<Json> splitDepths;
+    for (double share : {0.002, 0.004, 0.006, 0.01, 0.015, 0.02, 0.03, 0.04, 0.06, 0.08, 0.1, 0.13, 0.17, 0.22, 0.3,
+                         0.4, 0.5, 0.65, 0.8})
+        splitDepths.emplace_back(std::round(double(base.camera.farPlane) * share * 10.0) / 10.0);
+    for (int i = 0; i < kMaxTunedCascades; ++i) {
+        s.dims.push_back({"cascades.mapSizes[" + std::to_string(i) + "]", list({256, 512, 1024, 2048, 4096}), true});
+        if (i + 1 < kMaxTunedCascades)
+            s.dims.push_back({"cascades.manualSplits[" + std::to_string(i) + "]", splitDepths, true});
+    }
     add("cascades.blendBand", list({0.0, 0.05, 0.1, 0.2}));
     add("cascades.fadeBand", list({0.0, 0.1, 0.2}));
     add("filter.kind", enumValues("filter.kind"));
@@ -86,19 +100,74 @@ Space defaultSpace(const Settings& base) {
     return s;
 }
 
-Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json& value) {
-    if (const std::optional<Element> e = elementOf(path)) {
-        const FieldInfo& f = field(e->list);
-        auto factors = std::get<std::vector<float>>(f.get(s));
-        if (factors.empty()) factors.assign(std::size_t(s.cascades.count), 1.0f);  // every cascade at the global bias
-        if (e->index >= factors.size()) throw SettingsError(path + ": no cascade " + std::to_string(e->index));
-        factors[e->index] = value.get<float>();
-        f.set(s, factors);
+namespace {
+
+// The interior split depths `s` renders with its scheme, before depth bounds move them: where a
+// move of one manual split starts from when the preset computes its splits.
+std::vector<float> interiorSplits(const Settings& s) {
+    if (s.cascades.scheme == SplitScheme::Manual) return s.cascades.manualSplits;
+    csm::SplitParams p;
+    p.scheme = s.cascades.scheme;
+    p.count = s.cascades.count;
+    p.nearPlane = s.camera.nearPlane;
+    p.farPlane = s.camera.farPlane;
+    p.lambda = s.cascades.lambda;
+    p.shadowDistance = s.cascades.shadowDistance;
+    std::vector<float> z;
+    try {
+        z = csm::computeSplits(p);
+    } catch (const std::invalid_argument& e) {
+        throw SettingsError(std::string("tune: ") + e.what());
+    }
+    return {z.begin() + 1, z.end() - 1};
+}
+
+std::vector<int> mapSizesOf(const CascadeSettings& c) {
+    return c.mapSizes.empty() ? std::vector<int>(std::size_t(c.count), c.mapSize) : c.mapSizes;
+}
+
+// One element of a per-cascade list: a split depth (the preset turns manual, its other splits
+// where they were), a map size (the others at the size they had), or a bias factor.
+Settings withElement(Settings s, const Element& e, const nlohmann::json& value, const std::string& path) {
+    const std::string noCascade = path + ": no cascade " + std::to_string(e.index);
+    if (e.list == "cascades.manualSplits") {
+        std::vector<float> splits = interiorSplits(s);
+        if (e.index >= splits.size()) throw SettingsError(noCascade);
+        splits[e.index] = value.get<float>();
+        s.cascades.scheme = SplitScheme::Manual;
+        s.cascades.manualSplits = splits;
         return s;
     }
+    if (e.list == "cascades.mapSizes") {
+        std::vector<int> sizes = mapSizesOf(s.cascades);
+        if (e.index >= sizes.size()) throw SettingsError(noCascade);
+        sizes[e.index] = value.get<int>();
+        s.cascades.mapSizes = sizes;
+        return s;
+    }
+    const FieldInfo& f = field(e.list);
+    auto factors = std::get<std::vector<float>>(f.get(s));
+    if (factors.empty()) factors.assign(std::size_t(s.cascades.count), 1.0f);  // every cascade at the global bias
+    if (e.index >= factors.size()) throw SettingsError(noCascade);
+    factors[e.index] = value.get<float>();
+    f.set(s, factors);
+    return s;
+}
+
+}  // namespace
+
+Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json& value) {
+    if (const std::optional<Element> e = elementOf(path)) return withElement(std::move(s), *e, value, path);
     const FieldInfo& f = field(path);
+    const int sizeBefore = s.cascades.mapSize;
     f.set(s, readFieldValue(f, value, path));
-    if (path == "cascades.count") fitCascadeFactors(s.bias, s.cascades.count);
+    if (path == "cascades.count") fitCascadeLists(s);
+    // One size for every layer: the array storage has no per-cascade sizes.
+    if (path == "cascades.storage" && s.cascades.storage == CascadeStorage::Array) s.cascades.mapSizes.clear();
+    // The size of every map: per-cascade sizes keep their ratios (within the field's limits).
+    if (path == "cascades.mapSize")
+        for (int& size : s.cascades.mapSizes)
+            size = std::clamp(int(std::int64_t(size) * s.cascades.mapSize / sizeBefore), 256, 8192);
     // Manual splits are one per cascade boundary: another count, or a weight, means computed splits.
     const bool manual = s.cascades.scheme == SplitScheme::Manual;
     if (manual && (path == "cascades.lambda" || s.cascades.manualSplits.size() != std::size_t(s.cascades.count - 1))) {
@@ -112,6 +181,14 @@ Settings withValue(Settings s, const Dimension& d, std::size_t i) { return withF
 
 Json currentValue(const Settings& s, const Dimension& d) {
     if (const std::optional<Element> e = elementOf(d.path)) {
+        if (e->list == "cascades.manualSplits") {
+            const std::vector<float> splits = interiorSplits(s);
+            return e->index < splits.size() ? Json(double(splits[e->index])) : Json(nullptr);
+        }
+        if (e->list == "cascades.mapSizes") {
+            const std::vector<int> sizes = mapSizesOf(s.cascades);
+            return e->index < sizes.size() ? Json(sizes[e->index]) : Json(s.cascades.mapSize);
+        }
         const auto factors = std::get<std::vector<float>>(field(e->list).get(s));
         return e->index < factors.size() ? Json(double(factors[e->index])) : Json(1.0);
     }
@@ -134,7 +211,11 @@ std::size_t currentIndex(const Settings& s, const Dimension& d) {
 }
 
 bool applies(const Settings& s, const std::string& path) {
-    if (const std::optional<Element> e = elementOf(path)) return int(e->index) < s.cascades.count && fieldApplies(s, path);
+    if (const std::optional<Element> e = elementOf(path)) {
+        // A split moves a computed scheme's splits too (the preset turns manual).
+        if (e->list == "cascades.manualSplits") return int(e->index) < s.cascades.count - 1;
+        return int(e->index) < s.cascades.count && fieldApplies(s, path);
+    }
     return fieldApplies(s, path);
 }
 

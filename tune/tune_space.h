@@ -18,6 +18,10 @@ inline constexpr int kMaxTunedCascades = 6;
 struct Dimension {
     std::string path;                   // "cascades.lambda", or a list element: "bias.constantScale[1]"
     std::vector<nlohmann::json> values;  // in order: neighbours are adjacent
+    // A refinement (one cascade's map size or split depth): tried only once no move of the
+    // others helps, so the many per-cascade moves do not spend the evaluations a descent of
+    // the whole preset needs first.
+    bool refinement = false;
 };
 
 struct Space {
@@ -28,7 +32,8 @@ struct Space {
 // The default space for tuning `base`: split count, scheme weight, shadow distance (fractions of
 // the base's far plane), depth bounds and sample fit, fit, z-extension, stabilisation, storage,
 // map size, filter kind and its parameters, bias constant, slope, normal offset and
-// receiver-plane, blend and fade bands. Fields that only time-slice work (updateInterval) are
+// receiver-plane, blend and fade bands, bias per cascade; as refinements, each cascade's map size
+// (atlas and textures storage) and each split depth (a computed scheme turns manual). Fields that only time-slice work (updateInterval) are
 // left out: the cost model prices a frame with every map redrawn, so they would look free.
 Space defaultSpace(const Settings& base);
 

@@ -136,6 +136,49 @@ TEST(TuneSearchTest, AScreenSkipsFullEvaluationsOfWorseNeighbours) {
     EXPECT_LT(halving.evaluationsToBest, plain.evaluationsToBest) << "the screened-out neighbours were not evaluated";
 }
 
+// The second rung also predicts the full cost from the screens' ratio: a neighbour that screens
+// better but would land over the budget is not evaluated in full.
+TEST(TuneSearchTest, AScreenPredictingACostOverTheBudgetSkipsTheFullEvaluation) {
+    Budget budget;
+    budget.ms = 100.0;
+    Evaluation fromFull, fromScreen, mine;
+    fromFull.costMs = 96.0, fromScreen.costMs = 40.0, fromScreen.error = 0.5;
+    mine.error = 0.4;
+    mine.costMs = 40.0 * 1.03;  // predicted 98.9 ms: within
+    EXPECT_TRUE(worthFullEvaluation(mine, fromScreen, fromFull, budget));
+    mine.costMs = 40.0 * 1.10;  // predicted 105.6 ms: over the budget by more than the slack
+    EXPECT_FALSE(worthFullEvaluation(mine, fromScreen, fromFull, budget));
+    mine.costMs = 40.0;
+    mine.error = 0.5;  // no better on the screen
+    EXPECT_FALSE(worthFullEvaluation(mine, fromScreen, fromFull, budget));
+    mine.error = 0.4;
+    budget.bytes = 1000.0;
+    mine.mapBytes = 1001.0;  // memory is the same at any size
+    EXPECT_FALSE(worthFullEvaluation(mine, fromScreen, fromFull, budget));
+
+    // In a search whose screen costs half the full evaluation (a smaller image), no neighbour of a
+    // point within the budget is evaluated in full only to be found over it.
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 300;
+    opt.screen = [](const Settings& s) {
+        Evaluation e = bowl(s);
+        e.costMs *= 0.5;
+        return e;
+    };
+    const SearchResult r = search({Settings{}}, space, bowl, opt);
+    ASSERT_TRUE(r.best);
+    bool within = false;
+    int overAfterwards = 0;
+    for (const Candidate& c : r.evaluated) {
+        if (within && c.move.rfind("restart", 0) != 0 && c.eval.costMs > *opt.budget.ms * (1.0 + kScreenCostSlack))
+            ++overAfterwards;
+        within = within || c.feasible;
+    }
+    EXPECT_EQ(overAfterwards, 0);
+}
+
 TEST(TuneSearchTest, StopsWhenAskedAndSaysSo) {
     int calls = 0;
     SearchOptions opt;
