@@ -37,6 +37,7 @@ const char* featureName(Feature f) {
         case Feature::FilterTaps: return "filterTaps";
         case Feature::BytesRead: return "bytesRead";
         case Feature::BytesWritten: return "bytesWritten";
+        case Feature::LargeMapFragments: return "largeMapFragments";
     }
     return "?";
 }
@@ -63,6 +64,7 @@ double featureValue(const PassWork& w, Feature f) {
         case Feature::FilterTaps: return double(w.filterTaps);
         case Feature::BytesRead: return double(w.bytesRead);
         case Feature::BytesWritten: return double(w.bytesWritten);
+        case Feature::LargeMapFragments: return w.texelsCleared >= kLargeMapTexels ? double(w.fragments) : 0.0;
     }
     return 0.0;
 }
@@ -70,7 +72,8 @@ double featureValue(const PassWork& w, Feature f) {
 std::vector<Feature> defaultFeatures(PassKind k) {
     using F = Feature;
     switch (k) {
-        case PassKind::Cascade: return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::TexelsCleared};
+        case PassKind::Cascade:
+            return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::TexelsCleared, F::LargeMapFragments};
         case PassKind::Main: return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::SamplesPassed, F::FilterTaps};
         case PassKind::Filter: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::FilterTaps};
         case PassKind::DepthBounds: return {F::Intercept, F::Fragments, F::ComputeInvocations};

@@ -8,6 +8,7 @@
 #include "renderer/render/pass_work.h"
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,16 +24,19 @@ inline constexpr std::array<PassKind, 4> kPassKinds{PassKind::Cascade, PassKind:
 const char* passKindName(PassKind k);  // "cascade", "main", "filter", "depthBounds"
 std::optional<PassKind> passKindFromName(std::string_view name);
 
-// A model term: PassWork's counters, and Intercept, 1 for a pass that did any work (a kept map,
-// or a filter that does not run, costs nothing).
+// A model term: PassWork's counters; Intercept, 1 for a pass that did any work (a kept map, or a
+// filter that does not run, costs nothing); and LargeMapFragments, the fragments of a pass whose
+// target holds at least kLargeMapTexels (a cascade's map of 2048² or more), which on llvmpipe cost
+// more each than a smaller map's (docs/cost-model.md#large-maps).
 enum class Feature {
     Intercept, Draws, Vertices, Primitives, ClippedPrimitives, Fragments, SamplesPassed, ComputeInvocations,
-    TexelsCleared, FilterTaps, BytesRead, BytesWritten
+    TexelsCleared, FilterTaps, BytesRead, BytesWritten, LargeMapFragments
 };
-inline constexpr std::array<Feature, 12> kFeatures{
+inline constexpr std::array<Feature, 13> kFeatures{
     Feature::Intercept, Feature::Draws, Feature::Vertices, Feature::Primitives, Feature::ClippedPrimitives,
     Feature::Fragments, Feature::SamplesPassed, Feature::ComputeInvocations, Feature::TexelsCleared, Feature::FilterTaps,
-    Feature::BytesRead, Feature::BytesWritten};
+    Feature::BytesRead, Feature::BytesWritten, Feature::LargeMapFragments};
+inline constexpr std::uint64_t kLargeMapTexels = 2048u * 2048u;
 const char* featureName(Feature f);  // PassWork's member names; "intercept"
 std::optional<Feature> featureFromName(std::string_view name);
 double featureValue(const PassWork& w, Feature f);

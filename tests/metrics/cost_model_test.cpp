@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -133,6 +135,26 @@ TEST(CostModelTest, EveryFeatureHasItsNameAndItsCounter) {
     w.samplesPassed = 1234;
     EXPECT_EQ(featureValue(w, Feature::SamplesPassed), 1234.0);
     EXPECT_EQ(featureValue(w, Feature::Fragments), 5000.0);
+}
+
+// A map of 2048² or more prices its fragments twice: as fragments, and as a large map's.
+TEST(CostModelTest, LargeMapFragmentsAreTheFragmentsOfMapsOf2048SquaredOrMore) {
+    PassWork w;
+    w.fragments = 5000;
+    w.texelsCleared = 1024u * 1024u;
+    EXPECT_EQ(featureValue(w, Feature::LargeMapFragments), 0.0);
+    w.texelsCleared = 2048u * 2048u - 1u;
+    EXPECT_EQ(featureValue(w, Feature::LargeMapFragments), 0.0);
+    w.texelsCleared = 2048u * 2048u;
+    EXPECT_EQ(featureValue(w, Feature::LargeMapFragments), 5000.0);
+    EXPECT_EQ(featureFromName("largeMapFragments"), Feature::LargeMapFragments);
+    const std::vector<Feature> cascade = defaultFeatures(PassKind::Cascade);
+    EXPECT_NE(std::find(cascade.begin(), cascade.end(), Feature::LargeMapFragments), cascade.end());
+    CostProfile p;
+    p.pass(PassKind::Cascade).terms = {{Feature::Fragments, 1e-6}, {Feature::LargeMapFragments, 5e-7}};
+    FrameWork f;
+    f.cascades = {w};
+    EXPECT_NEAR(modelFrame(p, f).shadowMs, 5000 * 1.5e-6, 1e-15);
 }
 
 // A profile written before samplesPassed was counted has no term for it: it loads and models
