@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+
 namespace st::metrics {
 namespace {
 
@@ -19,6 +23,23 @@ TEST(TexelDensityTest, NearestRankQuantiles) {
     EXPECT_FLOAT_EQ(d.max, 10.0f);
     EXPECT_DOUBLE_EQ(d.aliasingShare, 0.9);  // 1.1 .. 10
     EXPECT_DOUBLE_EQ(d.wastedShare, 0.02);   // 0.1, 0.2
+}
+
+// The selection of the three ranks gives what a full sort gives, on shuffled values with ties.
+TEST(TexelDensityTest, QuantilesMatchASortedCopy) {
+    std::mt19937 rng(7);
+    for (std::size_t n : {1u, 2u, 19u, 20u, 1000u, 4097u}) {
+        std::vector<float> values(n);
+        for (float& v : values) v = float(std::uniform_int_distribution<int>(0, 300)(rng)) / 16.0f;
+        std::vector<float> sorted = values;
+        std::sort(sorted.begin(), sorted.end());
+        const auto rank = [&](double q) { return sorted[std::clamp<std::size_t>(std::size_t(std::ceil(q * double(n))), 1, n) - 1]; };
+        const DensityStats d = densityStats(values);
+        EXPECT_EQ(d.median, rank(0.5)) << n;
+        EXPECT_EQ(d.p90, rank(0.9)) << n;
+        EXPECT_EQ(d.p95, rank(0.95)) << n;
+        EXPECT_EQ(d.max, sorted.back()) << n;
+    }
 }
 
 TEST(TexelDensityTest, EmptyIsZero) { EXPECT_EQ(densityStats({}).pixels, 0u); }
