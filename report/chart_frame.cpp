@@ -80,14 +80,23 @@ void layoutPlot(Frame& frame, double topPx, double bottomPx) {
     frame.plot.y1 = bottomPx - frame.px(66);
 }
 
+// A line centred on the page in at most `fontPx`, smaller when it would not fit between the
+// page's margins (a tune's title names the scene, size, figure, cost and profile), down to a
+// floor below which it stays legible and is clipped.
+void centredLine(const Frame& frame, double yPx, double fontPx, const std::string& text) {
+    const double room = frame.width - 2.0 * frame.px(12);
+    const double wide = textWidthPx(text, frame.px(fontPx));
+    const double fit = wide > room ? fontPx * room / wide : fontPx;
+    setTextPx(frame, std::max(fit, std::min(fontPx, 11.0)));
+    pageText(frame, frame.width / 2.0, frame.px(yPx), 0.5, text);
+}
+
 void drawTitle(const Frame& frame, const std::string& title, const std::string& subtitle) {
     usePageCoordinates(frame);
     plcol0(kInk);
-    setTextPx(frame, kTitleFont);
-    pageText(frame, frame.width / 2.0, frame.px(34), 0.5, plText(title));
+    centredLine(frame, 34, kTitleFont, plText(title));
     plcol0(kMutedInk);
-    setTextPx(frame, kSubtitleFont);
-    pageText(frame, frame.width / 2.0, frame.px(66), 0.5, subtitle);
+    centredLine(frame, 66, kSubtitleFont, subtitle);
 }
 
 namespace {

@@ -550,20 +550,26 @@ private:
         }
         const metrics::MeasureTimings& t = evaluator_->spent();
         const double n = std::max(1, evaluator_->measurements());
+        // A median of nothing is no figure (a resumed tune that found every point in its journal).
+        const auto medianOf = [](const std::vector<double>& ms) { return ms.empty() ? Json(nullptr) : Json(metrics::median(ms)); };
         s["timing"] = {{"evaluationsMeasured", evalMs_.size()},
-                       {"medianMsPerEvaluation", metrics::median(evalMs_)},
+                       {"medianMsPerEvaluation", medianOf(evalMs_)},
                        {"screeningsMeasured", screenMs_.size()},
-                       {"medianMsPerScreening", metrics::median(screenMs_)},
+                       {"medianMsPerScreening", medianOf(screenMs_)},
                        {"meanMsPerViewMeasurement", t.totalMs / n},
                        {"meanRenderAndReadBackMs", t.measurePassMs / n},
                        {"meanTruthMs", t.groundTruthMs / n},
                        {"meanSoftTruthMs", t.softTruthMs / n},
                        {"mapsDrawn", evaluator_->mapsDrawn() + screener_->mapsDrawn()},
                        {"mapsKept", evaluator_->mapsKept() + screener_->mapsKept()}};
-        say("time: median " + fixed(metrics::median(evalMs_), 0) + " ms per evaluation (" + std::to_string(evalMs_.size()) +
+        if (evalMs_.empty() && screenMs_.empty()) {
+            say("time: nothing measured in this run (every point was in the journal)");
+        } else {
+            say("time: median " + fixed(metrics::median(evalMs_), 0) + " ms per evaluation (" + std::to_string(evalMs_.size()) +
             " measured), " + fixed(metrics::median(screenMs_), 0) + " ms per screening (" + std::to_string(screenMs_.size()) +
             "; one view at half size); per view " + fixed(t.totalMs / n, 0) + " ms (render and read-back " + fixed(t.measurePassMs / n, 0) +
             ", truth " + fixed(t.groundTruthMs / n, 0) + ", soft truth " + fixed(t.softTruthMs / n, 0) + ")");
+        }
         if (writes()) writeTextAtomic(opt_.outDir / "summary.json", s.dump(2) + "\n");
     }
 
