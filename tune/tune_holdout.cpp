@@ -15,7 +15,8 @@ HeldOutVerdict heldOutVerdict(const HeldOutScore& input, const std::vector<HeldO
     v.gainTuned = base->tuned - tuned.tuned;
     v.gainHeldOut = base->heldOut - tuned.heldOut;
     // Gain g > 0 must keep g/2; a loss (g < 0) may grow to 2g; g = 0 may not turn into a loss.
-    v.holds = v.gainHeldOut >= std::min(0.5 * v.gainTuned, 2.0 * v.gainTuned);
+    v.judged = base->heldOut > 0.0 || tuned.heldOut > 0.0;
+    v.holds = !v.judged || v.gainHeldOut >= std::min(0.5 * v.gainTuned, 2.0 * v.gainTuned);
     return v;
 }
 

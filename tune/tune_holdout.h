@@ -15,6 +15,10 @@ struct HeldOutVerdict {
     std::string baseline;  // what the tuned preset is compared with
     double gainTuned = 0, gainHeldOut = 0;  // baseline error - tuned preset's error, per view set
     bool holds = true;
+    // False when the held-out views show no error for the baseline nor the tuned preset (a view
+    // with nothing shadowed, as living-room's orbits): there is no gain to keep, so nothing is
+    // judged and the tune is not flagged.
+    bool judged = true;
 };
 
 // The baseline is the best (least error on the tuned views) of the references, or the input when

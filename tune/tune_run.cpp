@@ -541,9 +541,12 @@ private:
             const HeldOutVerdict v = heldOutVerdict({"input", inputEval.error, in.error}, refScores,
                                                     {"tuned", best.eval.error, tu.error});
             s["heldOutHolds"] = v.holds;
+            s["heldOutJudged"] = v.judged;
             s["heldOutBaseline"] = v.baseline;
             const Json& baseHeld = v.baseline == "input" ? s["input"]["heldOut"] : s["references"][v.baseline]["heldOut"];
-            say(std::string(v.holds ? "held-out views: " : "warning: the tune does not hold on the held-out views: ") +
+            const char* verdict = !v.judged ? "held-out views (no error there for " :
+                                  v.holds   ? "held-out views: " : "warning: the tune does not hold on the held-out views: ";
+            say(std::string(verdict) + (v.judged ? "" : v.baseline + " nor the tuned preset: nothing to judge): ") +
                 errorText(opt_.objective, baseHeld["error"].get<double>()) + " " + v.baseline + " -> " +
                 errorText(opt_.objective, tu.error) + " tuned (on the tuned views " +
                 errorText(opt_.objective, best.eval.error + v.gainTuned) + " -> " + errorText(opt_.objective, best.eval.error) + ")");

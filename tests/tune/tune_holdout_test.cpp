@@ -43,5 +43,17 @@ TEST(HeldOutVerdictTest, NoGainMayNotTurnIntoALoss) {
     EXPECT_FALSE(heldOutVerdict(kInput, refs, {"tuned", 0.008, 0.0001}).holds);
 }
 
+// Held-out views with no error for either (nothing shadowed there) judge nothing: a tune that
+// gained on its views is not flagged for keeping none of a gain the held-out views could not show.
+TEST(HeldOutVerdictTest, HeldOutViewsWithoutErrorJudgeNothing) {
+    const std::vector<HeldOutScore> refs{{"filament", 0.2154, 0.0}};
+    const HeldOutVerdict v = heldOutVerdict(kInput, refs, {"tuned", 0.1564, 0.0});
+    EXPECT_FALSE(v.judged);
+    EXPECT_TRUE(v.holds);
+    const HeldOutVerdict lost = heldOutVerdict(kInput, refs, {"tuned", 0.1564, 0.0001});
+    EXPECT_TRUE(lost.judged);
+    EXPECT_FALSE(lost.holds) << "an error where the baseline had none is judged, and lost";
+}
+
 }  // namespace
 }  // namespace st::tune
