@@ -16,6 +16,7 @@ evaluations=${2:-60}
 out=${3:-$(mktemp -d)/tune}
 size=${4:-640x360}
 objective=${5:-soft-filtered}
+mkdir -p "$(dirname "$out")"  # an OUT_DIR whose parent does not exist yet
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
 cd "$root"
 tune() {  # tune OUT [extra options]: prints the wall-clock seconds
