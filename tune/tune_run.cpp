@@ -544,9 +544,10 @@ private:
             s["heldOutJudged"] = v.judged;
             s["heldOutBaseline"] = v.baseline;
             const Json& baseHeld = v.baseline == "input" ? s["input"]["heldOut"] : s["references"][v.baseline]["heldOut"];
-            const char* verdict = !v.judged ? "held-out views (no error there for " :
-                                  v.holds   ? "held-out views: " : "warning: the tune does not hold on the held-out views: ";
-            say(std::string(verdict) + (v.judged ? "" : v.baseline + " nor the tuned preset: nothing to judge): ") +
+            const std::string verdict = !v.judged ? "held-out views (nothing to judge: no error there for either): "
+                                        : v.holds ? "held-out views: "
+                                                  : "warning: the tune does not hold on the held-out views: ";
+            say(verdict +
                 errorText(opt_.objective, baseHeld["error"].get<double>()) + " " + v.baseline + " -> " +
                 errorText(opt_.objective, tu.error) + " tuned (on the tuned views " +
                 errorText(opt_.objective, best.eval.error + v.gainTuned) + " -> " + errorText(opt_.objective, best.eval.error) + ")");

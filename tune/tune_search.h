@@ -77,10 +77,10 @@ inline constexpr int kScreensPerEvaluation = 6;
 // (evaluated in full as `fromFull`, screened as `fromScreen`), is worth a full evaluation when it
 // screens better and its full cost, predicted from the screens' ratio, stays within the budget:
 // modelled cost times mine.costMs / fromScreen.costMs at most kScreenCostSlack over the budget's
-// milliseconds, and map memory (the same at any output size) within its bytes. Without the cost
-// test, a map-size or count move up from a point at the budget's edge screened better (bigger
-// maps are) and spent a full evaluation to learn it was over the budget: 23 of 60 evaluations of
-// truck-town's tune at ogldev-49's budget.
+// milliseconds, and map memory (the same at any output size) within its bytes. Without these
+// tests, map-size moves up from a point at the budget's edge screened better (bigger maps are)
+// and spent a full evaluation each to learn they were over the budget: 22 of 60 evaluations of
+// truck-town's tune at ogldev-49's budget, every one of them over its memory.
 inline constexpr double kScreenCostSlack = 0.03;
 bool worthFullEvaluation(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull,
                          const Budget& budget);

@@ -1,6 +1,6 @@
 #include "tune/tune_space.h"
 
-#include "renderer/csm/splits.h"
+#include "renderer/csm/cascade_plan.h"
 #include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/kind_descriptors.h"
@@ -105,17 +105,9 @@ namespace {
 // The interior split depths `s` renders with its scheme, before depth bounds move them: where a
 // move of one manual split starts from when the preset computes its splits.
 std::vector<float> interiorSplits(const Settings& s) {
-    if (s.cascades.scheme == SplitScheme::Manual) return s.cascades.manualSplits;
-    csm::SplitParams p;
-    p.scheme = s.cascades.scheme;
-    p.count = s.cascades.count;
-    p.nearPlane = s.camera.nearPlane;
-    p.farPlane = s.camera.farPlane;
-    p.lambda = s.cascades.lambda;
-    p.shadowDistance = s.cascades.shadowDistance;
     std::vector<float> z;
     try {
-        z = csm::computeSplits(p);
+        z = csm::planSplits(s, std::nullopt);  // no depth range seen: the scheme's own splits
     } catch (const std::invalid_argument& e) {
         throw SettingsError(std::string("tune: ") + e.what());
     }
@@ -161,9 +153,7 @@ Settings withFieldJson(Settings s, const std::string& path, const nlohmann::json
     const FieldInfo& f = field(path);
     const int sizeBefore = s.cascades.mapSize;
     f.set(s, readFieldValue(f, value, path));
-    if (path == "cascades.count") fitCascadeLists(s);
-    // One size for every layer: the array storage has no per-cascade sizes.
-    if (path == "cascades.storage" && s.cascades.storage == CascadeStorage::Array) s.cascades.mapSizes.clear();
+    keepCascadeListsValid(s, path);
     // The size of every map: per-cascade sizes keep their ratios (within the field's limits).
     if (path == "cascades.mapSize")
         for (int& size : s.cascades.mapSizes)

@@ -121,7 +121,7 @@ Settings withAssignments(Settings s, const std::vector<std::pair<std::string, st
         if (!field) continue;
         try {
             field->set(s, readFieldValue(*field, nlohmann::json::parse(json), path));
-            if (path == "cascades.count") fitCascadeLists(s);
+            keepCascadeListsValid(s, path);
         } catch (const std::exception&) {
             // A foreign point keeps what this build cannot set.
         }

@@ -75,7 +75,7 @@ void drawField(UiFrame& f, const FieldInfo& field) {
     const std::optional<Settings> before = affectsMapCost(field.path) ? std::optional<Settings>(f.s) : std::nullopt;
     bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
     if (changed && before && holdExpensiveEdit(f, field, *before)) changed = false;
-    if (changed && field.path == "cascades.count") fitCascadeLists(f.s);
+    if (changed) keepCascadeListsValid(f.s, field.path);
     f.edited = f.edited || changed;
     drawFieldIssues(f, field);
     ImGui::PopID();

@@ -1,10 +1,11 @@
 #pragma once
 // The per-cascade lists (bias.constantScale, slopeScale, normalOffsetScale; cascades.mapSizes) kept
-// valid when cascades.count changes: the editor's count widget and the tuner's count moves call it, so
-// a count change never leaves a list that validation refuses.
+// valid when the field they depend on changes: the editor's widgets, its applied tune changes and
+// the tuner's moves call keepCascadeListsValid, so no such change leaves a list validation refuses.
 #include "renderer/settings/settings.h"
 
 #include <cstddef>
+#include <string_view>
 #include <vector>
 
 namespace st {
@@ -24,10 +25,14 @@ inline void fitCascadeMapSizes(CascadeSettings& c) {
     c.mapSizes.resize(static_cast<std::size_t>(c.count), c.mapSizes.back());
 }
 
-// Both, after a change of cascades.count (the editor's count widget, the tuner's count moves).
-inline void fitCascadeLists(Settings& s) {
-    fitCascadeFactors(s.bias, s.cascades.count);
-    fitCascadeMapSizes(s.cascades);
+// After the field at `path` changed: the lists follow cascades.count, and a move to the array
+// storage (one size for every layer) drops the per-cascade sizes.
+inline void keepCascadeListsValid(Settings& s, std::string_view path) {
+    if (path == "cascades.count") {
+        fitCascadeFactors(s.bias, s.cascades.count);
+        fitCascadeMapSizes(s.cascades);
+    }
+    if (path == "cascades.storage" && s.cascades.storage == CascadeStorage::Array) s.cascades.mapSizes.clear();
 }
 
 }  // namespace st

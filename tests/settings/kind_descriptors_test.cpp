@@ -147,6 +147,25 @@ TEST(CascadeBiasTest, FactorListsFollowTheCascadeCount) {
     EXPECT_TRUE(validate(s).empty());
 }
 
+// The per-cascade map sizes follow the count (padded with the last size) and go with the array
+// storage, which has one size for every layer.
+TEST(CascadeBiasTest, MapSizesFollowTheCountAndTheStorage) {
+    Settings s;
+    s.cascades.count = 3;
+    s.cascades.storage = CascadeStorage::Textures;
+    s.cascades.mapSizes = {2048, 1024, 512};
+    s.cascades.count = 4;
+    keepCascadeListsValid(s, "cascades.count");
+    EXPECT_EQ(s.cascades.mapSizes, (std::vector<int>{2048, 1024, 512, 512}));
+    EXPECT_TRUE(validate(s).empty());
+    keepCascadeListsValid(s, "cascades.lambda");
+    EXPECT_EQ(s.cascades.mapSizes.size(), 4u) << "another field leaves them";
+    s.cascades.storage = CascadeStorage::Array;
+    keepCascadeListsValid(s, "cascades.storage");
+    EXPECT_TRUE(s.cascades.mapSizes.empty());
+    EXPECT_TRUE(validate(s).empty());
+}
+
 TEST(CascadeBiasTest, JsonRoundTripAndOldPresetsReadAsBefore) {
     Settings s;
     s.cascades.count = 2;
