@@ -131,6 +131,7 @@ double cachedSoftTruth(MeasureSession::SceneEntry& e, MeasureSession::CachedTrut
     if (c.disc && *c.disc == disc) return 0.0;
     const auto t0 = Clock::now();
     c.soft = e.truth->traceDisc(samples, c.toSun, disc, c.eye);
+    c.softRegions = softTruthRegions(samples, c.soft);
     c.disc = disc;
     return msSince(t0);
 }
@@ -180,7 +181,7 @@ void measureStill(MeasureSession::SceneEntry& e, Renderer& r, MeasurePass& pass,
     m.sun = sunDisc(s);
     m.timings.softTruthMs = cachedSoftTruth(e, cached, m.samples, m.sun);
     m.softTruth = cached.soft;
-    m.soft = scoreSoftAccuracy(m.samples, m.softTruth, texelWorldSizes(r.plan()),
+    m.soft = scoreSoftAccuracy(m.samples, m.softTruth, cached.softRegions, texelWorldSizes(r.plan()),
                                {.k = s.measure.artifactTexels});
     m.density = texelDensity(m.samples, s.cascades.count);
 }

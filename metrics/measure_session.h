@@ -98,6 +98,7 @@ public:
         // plus light.angularDiameter and measure.sunRays; the seed is fixed).
         std::optional<SunDisc> disc;
         SoftTruth soft;
+        SoftTruthRegions softRegions;  // of `soft` on these surfaces: what every candidate's scoring shares
     };
     // A tune alternates between a few views; each keeps its truth (most recently used first).
     static constexpr std::size_t kCachedViews = 8;

@@ -114,27 +114,40 @@ void penumbraWidth(const MeasureSamples& s, const std::vector<float>& f, const s
     widthPx = contour ? double(pixels) / double(contour) : 0.0;
 }
 
+SoftTruthRegions softTruthRegions(const MeasureSamples& s, const SoftTruth& t) {
+    SoftTruthRegions g;
+    // Distance from lit pixels to the nearest not fully lit one, and from umbra pixels to the
+    // nearest not fully shadowed one: how far inside its region a pixel is.
+    g.toShadow = distanceToNearest(s.width, s.height, region(s, t, [](float v) { return v < 1.0f; }));
+    g.toLight = distanceToNearest(s.width, s.height, region(s, t, [](float v) { return v > 0.0f; }));
+    int regionCount = 0;
+    g.label = shadowRegions(s, t, regionCount);
+    g.regionSize.assign(std::size_t(regionCount), 0);
+    for (const int l : g.label)
+        if (l >= 0) ++g.regionSize[std::size_t(l)];
+    penumbraWidth(s, t.visible, {}, 0.0f, g.truthPenumbra.truthPx, g.truthPenumbra.truthPixels,
+                  g.truthPenumbra.truthContour);
+    return g;
+}
+
 SoftAccuracyReport scoreSoftAccuracy(const MeasureSamples& s, const SoftTruth& t,
+                                     const std::vector<float>& texelWorldSize, const ArtifactParams& p) {
+    return scoreSoftAccuracy(s, t, softTruthRegions(s, t), texelWorldSize, p);
+}
+
+SoftAccuracyReport scoreSoftAccuracy(const MeasureSamples& s, const SoftTruth& t, const SoftTruthRegions& g,
                                      const std::vector<float>& texelWorldSize, const ArtifactParams& p) {
     SoftAccuracyReport r;
     r.cascades.resize(texelWorldSize.size());
     r.classes.assign(s.size(), ArtifactClass::NotScored);
-    // Distance from lit pixels to the nearest not fully lit one, and from umbra pixels to the
-    // nearest not fully shadowed one: how far inside its region a pixel is.
-    const std::vector<float> toShadow =
-        distanceToNearest(s.width, s.height, region(s, t, [](float v) { return v < 1.0f; }));
-    const std::vector<float> toLight =
-        distanceToNearest(s.width, s.height, region(s, t, [](float v) { return v > 0.0f; }));
-
-    int regionCount = 0;
-    const std::vector<int> label = shadowRegions(s, t, regionCount);
-    std::vector<std::size_t> size(std::size_t(regionCount), 0), light(std::size_t(regionCount), 0);
+    const std::vector<float>& toShadow = g.toShadow;
+    const std::vector<float>& toLight = g.toLight;
+    const std::vector<int>& label = g.label;
+    const std::vector<std::size_t>& size = g.regionSize;
+    std::vector<std::size_t> light(size.size(), 0);
     auto tooLight = [&](std::size_t i) { return s.shadow[i].y > t.visible[i] + p.tolerance; };
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (label[i] < 0) continue;
-        ++size[std::size_t(label[i])];
-        light[std::size_t(label[i])] += tooLight(i);
-    }
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (label[i] >= 0) light[std::size_t(label[i])] += tooLight(i);
 
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (!s.receiver(i)) continue;
@@ -172,7 +185,7 @@ SoftAccuracyReport scoreSoftAccuracy(const MeasureSamples& s, const SoftTruth& t
         penumbraUse[i] =
             nearShadow && (k == ArtifactClass::Correct || k == ArtifactClass::Edge || k == ArtifactClass::PeterPanning);
     }
-    penumbraWidth(s, t.visible, {}, 0.0f, r.penumbra.truthPx, r.penumbra.truthPixels, r.penumbra.truthContour);
+    r.penumbra = g.truthPenumbra;
     penumbraWidth(s, filtered, penumbraUse, 0.02f, r.penumbra.filteredPx, r.penumbra.filteredPixels, r.penumbra.filteredContour);
     return r;
 }

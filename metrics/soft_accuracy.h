@@ -60,8 +60,23 @@ struct SoftAccuracyReport {
     std::vector<ArtifactClass> classes;    // per pixel, for artifacts.png
 };
 
+// What the scoring reads of the truth and the frame's surfaces alone, not of the shadow result:
+// the same for every candidate on one view, so a tune finds it once per view
+// (MeasureSession::CachedTruth) instead of at each measurement.
+struct SoftTruthRegions {
+    std::vector<float> toShadow;  // px from each pixel to the nearest not fully lit one
+    std::vector<float> toLight;   // px from each pixel to the nearest not fully shadowed one
+    std::vector<int> label;       // 4-connected region of true shadow (t < 0.5), -1 elsewhere
+    std::vector<std::size_t> regionSize;
+    PenumbraWidth truthPenumbra;  // its truth* fields
+};
+SoftTruthRegions softTruthRegions(const MeasureSamples& samples, const SoftTruth& truth);
+
 // texelWorldSize[c]: cascade c's texel in metres (CascadeFit::texelWorldSize).
 SoftAccuracyReport scoreSoftAccuracy(const MeasureSamples& samples, const SoftTruth& truth,
+                                     const std::vector<float>& texelWorldSize, const ArtifactParams& params = {});
+// The same with `regions` = softTruthRegions(samples, truth), found earlier.
+SoftAccuracyReport scoreSoftAccuracy(const MeasureSamples& samples, const SoftTruth& truth, const SoftTruthRegions& regions,
                                      const std::vector<float>& texelWorldSize, const ArtifactParams& params = {});
 
 // Mean penumbra width of one per-pixel factor over the receivers where `use` is set (empty: all):

@@ -55,6 +55,19 @@ TEST_F(SoftArtifactsGLTest, SoftTruthIsTracedOncePerFrameAndDisc) {
     EXPECT_GT(c.timings.softTruthMs, 0.0);
     EXPECT_NE(c.softTruth.visible, a.softTruth.visible);
     EXPECT_GT(c.soft.penumbra.truthPx, a.soft.penumbra.truthPx) << "a wider sun, wider true penumbrae";
+    // The truth's regions (distances, shadow labels, true penumbra) are cached with it: scored
+    // afresh, the cached measurements read the same, and the new disc's are not the old ones.
+    std::vector<float> texels;
+    for (const csm::CascadeFit& f : session_.entryFor(s, ST_PRESET_DIR).renderer->plan().cascades)
+        texels.push_back(f.texelWorldSize);
+    for (const metrics::PresetMeasurement* m : {&b, &c}) {
+        const metrics::SoftAccuracyReport fresh =
+            metrics::scoreSoftAccuracy(m->samples, m->softTruth, texels, {.k = s.measure.artifactTexels});
+        EXPECT_EQ(m->soft.classes, fresh.classes);
+        EXPECT_EQ(m->soft.all.filteredError(), fresh.all.filteredError());
+        EXPECT_EQ(m->soft.penumbra.truthPx, fresh.penumbra.truthPx);
+        EXPECT_EQ(m->soft.penumbra.filteredPx, fresh.penumbra.filteredPx);
+    }
     printFigures("grazing-slope true penumbra: %.2f px at 0.53 deg, %.2f px at 2 deg", a.soft.penumbra.truthPx,
                  c.soft.penumbra.truthPx);
 }
