@@ -114,9 +114,15 @@ check "within the budget ($cost_t <= $budget)" "jq -n --argjson a '$cost_t' --ar
 # A preset with a camera path: the flicker F along it is measured with every evaluation and held
 # at most at the reference's (the yard's default preset has a 16-frame path; ogldev-49 has none of
 # its own, so it flickers along the yard's).
-"$st" tune "$2/presets/default.json" --budget-from "$2/presets/ogldev-49.json" --size 64x36 --views 1 --evaluations 6 \
+"$st" tune "$2/presets/default.json" --budget-from "$2/presets/ogldev-49.json" --size 64x36 --views 1 --evaluations 8 \
   --out "$work/path" >"$work/path.log" 2>&1
 check "a tune of a preset with a path exits 0" "[[ $? -eq 0 ]]"
+# The reference starts the search as it is and with each analytic bias (docs/tuning.md#the-search).
+ref_start() { jq -s "[.[] | select(.views == \"tuned\" and .settings.cascades.manualSplits == [25, 90] and .settings.cascades.count == 3
+                     and .settings.cascades.fit == \"cascade\" and .settings.bias.$1)] | length" "$work/path/evaluations.jsonl"; }
+check "the reference starts with its own bias" "[[ \$(ref_start 'constant == 0.03 and .settings.bias.slope == 1') -ge 1 ]]"
+check "and with the receiver plane and half a texel of slope" "[[ \$(ref_start 'receiverPlane and .settings.bias.constant == 0 and .settings.bias.slope == 0.5 and .settings.bias.normalOffset == 0') -ge 1 ]]"
+check "and with slope 1 and half a texel of normal offset" "[[ \$(ref_start 'receiverPlane == false and .settings.bias.constant == 0 and .settings.bias.slope == 1 and .settings.bias.normalOffset == 0.5') -ge 1 ]]"
 f_t=$(jq '.tuned.tuned.figures["flicker.flipRate"]' "$work/path/summary.json")
 f_r=$(jq '.references["ogldev-49"].tuned.figures["flicker.flipRate"]' "$work/path/summary.json")
 check "every evaluation measures the path's flicker" "[[ \$(grep -c '\"views\":\"tuned\"' '$work/path/evaluations.jsonl') -eq \$(grep '\"views\":\"tuned\"' '$work/path/evaluations.jsonl' | grep -c 'flicker.flipRate\":[0-9]') ]]"
