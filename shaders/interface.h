@@ -50,6 +50,11 @@
 #define ST_BINDING_SCREEN_SOURCE 18  // RG32F: x factor, y view depth (0: no surface)
 #define ST_BINDING_SCREEN_FULL 19    // RG32F, the full-size mask: its depths guide the upsample
 #define ST_BINDING_SCREEN_DEPTH 20   // D32F, the mask pass's depth: contact shadows find the surface
+// The measurement pass's surfaces (renderer/render/measure_pass.h), read by measure_shadow.frag.
+#define ST_BINDING_SURFACE_POSITION 21  // RGBA32F: ws position, w = 1 where a surface was drawn
+#define ST_BINDING_SURFACE_NORMAL 22    // RGBA32F: ws shading normal, w = N.L
+#define ST_BINDING_SURFACE_DX 23        // RGBA32F: the position's screen x derivative, w = view depth
+#define ST_BINDING_SURFACE_DY 24        // RGBA32F: the position's screen y derivative
 
 // Vertex attribute locations (renderer/render/scene_gpu.cpp, line_pass.cpp).
 #define ST_ATTRIB_POSITION 0  // ws

@@ -315,16 +315,14 @@ float fadeWeight(int i, float vsDepth) {
     return clamp((vsDepth - (cascade[i].vsFar - band)) / band, 0.0, 1.0);
 }
 
-ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth) {
+// The factor of a surface point whose world-position screen derivatives are wsDx, wsDy: the
+// measurement pass's resolve (measure_shadow.frag) passes the ones its surface pass stored.
+ShadowResult shadowFactorGrad(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth, vec3 wsDx, vec3 wsDy) {
     int c = selection == ST_SELECT_INTERVAL ? selectInterval(vsDepth) : selectMap(wsPos, wsNormal);
-    // Coordinates and derivatives for c and c+1 are computed unconditionally: derivatives are
-    // only defined in uniform control flow.
     int ci = clamp(c, 0, cascadeCount - 1);
     int cn = min(ci + 1, cascadeCount - 1);
     vec3 ts = shadowCoord(ci, wsPos, wsNormal);
     vec3 tsNext = shadowCoord(cn, wsPos, wsNormal);
-    vec3 wsDx = dFdx(wsPos);
-    vec3 wsDy = dFdy(wsPos);
     if (c < 0) return ShadowResult(1.0, -1);
     float tanTheta = tanToLight(nDotL);
     float f = sampleCascade(c, ts, wsDx, wsDy, tanTheta);
@@ -332,4 +330,9 @@ ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth)
     if (w > 0.0) f = mix(f, sampleCascade(cn, tsNext, wsDx, wsDy, tanTheta), w);
     f = mix(f, 1.0, fadeWeight(c, vsDepth));
     return ShadowResult(f, c);
+}
+
+// Derivatives are only defined in uniform control flow: taken here, before any branch.
+ShadowResult shadowFactor(vec3 wsPos, vec3 wsNormal, float nDotL, float vsDepth) {
+    return shadowFactorGrad(wsPos, wsNormal, nDotL, vsDepth, dFdx(wsPos), dFdy(wsPos));
 }

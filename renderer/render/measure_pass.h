@@ -1,7 +1,15 @@
 #pragma once
-// The measurement pass: the scene drawn again with the main pass's coverage, writing world
-// position, normal, the unfiltered and the filtered shadow result, the cascade and the texel
-// density into float targets (shaders/measure.frag), then read back for the metrics.
+// The measurement pass, in two halves. The surface pass draws the scene with the main pass's
+// coverage and writes what each pixel's surface is (world position, normals, the position's
+// screen derivatives, the view depth: shaders/measure_surface.frag); the shadow pass then tests
+// every such pixel against the maps with the preset's filter and bias (measure_shadow.frag). Both
+// are read back as floats for the metrics.
+//
+// Why two: nothing the surface pass writes depends on a shadow setting, so a view keeps its
+// surfaces while a sweep or a tune changes the filter, bias, cascades or maps, and each candidate
+// costs one fullscreen pass and one read-back instead of drawing the scene again with four float
+// targets (truck-town, 640x360: 47 ms per view; docs/tuning.md#speed). The shadow pass takes the
+// inputs main.frag's shading takes, stored as the floats they were, so its factor is the image's.
 #include "renderer/gpu/gl.h"
 #include "renderer/render/shader_library.h"
 #include "renderer/gpu/uniform_buffer.h"
@@ -14,7 +22,11 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstddef>
+#include <cstdint>
+#include <list>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace st {
@@ -28,26 +40,63 @@ public:
     // comes from that render's camera (the cascade camera), so the observer may stand elsewhere.
     MeasureSamples run(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj);
 
-    // The same draw, reading back only MeasureSamples::shadow: what each frame of a camera path
-    // needs (a quarter of the read-back).
+    // The same, reading back only MeasureSamples::shadow: what each frame of a camera path needs.
     std::vector<glm::vec4> runShadowOnly(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj);
 
-private:
-    void ensureTargets(int width, int height);
-    void draw(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj);
-    void drawScene(const Renderer& r) const;
-    std::vector<glm::vec4> read(const gpu::Texture& texture) const;
+    // Surface passes drawn and reused since construction (a reuse skips the scene draw).
+    std::size_t surfacesDrawn() const { return surfacesDrawn_; }
+    std::size_t surfacesReused() const { return surfacesReused_; }
 
-    SharedProgram program_;
-    gpu::Texture targets_[4];  // position, normal, shadow, geometry (RGBA32F)
+    // Kept surfaces, most recently used first, while they take at most this many bytes (GPU and
+    // read-back copies); the newest is always kept. A tune alternates between about five views.
+    static constexpr std::size_t kSurfaceBytes = std::size_t(256) << 20;
+
+private:
+    // What a surface pass's output depends on: the scene's geometry on the GPU, the observer, the
+    // cascade camera's view (the view depth), the sun (N.L) and the size.
+    struct SurfaceKey {
+        std::uint64_t scene = 0;  // SceneGpu::serial()
+        glm::mat4 observer{1.0f};
+        glm::mat4 cascadeView{1.0f};
+        glm::vec3 toSun{0.0f};
+        int width = 0;
+        int height = 0;
+        bool operator==(const SurfaceKey&) const = default;
+    };
+    struct Surface {
+        SurfaceKey key;
+        gpu::Texture position, normal, dx, dy;  // what the shadow pass reads (RGBA32F)
+        std::vector<glm::vec4> readPosition, readNormal, readGeometry;  // empty until first read back
+        std::size_t bytes() const;
+    };
+
+    Surface& surfaceFor(const Renderer& r, const SurfaceKey& key);
+    void drawSurface(const Renderer& r, Surface& surface);
+    void readSurface(Surface& surface);
+    void drawShadow(const Renderer& r, const Settings& s, const Surface& surface);
+    void ensureShadowTarget(int width, int height);
+    void drawScene(const Renderer& r) const;
+    std::vector<glm::vec4> read(const gpu::Texture& texture, int width, int height) const;
+
+    SharedProgram surfaceProgram_;
+    std::map<std::string, SharedProgram> shadowPrograms_;  // by their defines (shadowDefines in the .cpp)
+    gpu::Texture geometry_;  // the surface pass's geometric normals: read back at once, so one target serves all
     gpu::Texture depth_;
-    gpu::Framebuffer fbo_;
+    gpu::Framebuffer surfaceFbo_;
+    int surfaceWidth_ = 0;
+    int surfaceHeight_ = 0;
+    gpu::Texture shadow_;
+    gpu::Framebuffer shadowFbo_;
+    int shadowWidth_ = 0;
+    int shadowHeight_ = 0;
+    gpu::VertexArray emptyVao_;
+    std::list<Surface> surfaces_;
     gpu::UniformBuffer<gpu_if::ViewBlock> view_;
     // filter.screenSpace: the mask drawn with this pass's own draws and observer at its size, by
     // the renderer's code, so the factor scored is the one the image of that camera shows.
     std::unique_ptr<ScreenShadow> screen_;
-    int width_ = 0;
-    int height_ = 0;
+    std::size_t surfacesDrawn_ = 0;
+    std::size_t surfacesReused_ = 0;
 };
 
 // Shadow-map texels written by the last shadow pass, per cascade (depth below the clear value

@@ -4,6 +4,7 @@
 #include "shaders/interface.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -50,6 +51,8 @@ GLsizeiptr uniformStride(std::size_t bytes) {
 }  // namespace
 
 SceneGpu::SceneGpu(const Scene& scene) : scene_(&scene) {
+    static std::atomic<std::uint64_t> made{0};
+    serial_ = ++made;
     vertices_ = gpu::createBuffer(scene.vertices.data(),
                                   static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(Vertex)));
     indices_ = gpu::createBuffer(scene.indices.data(),

@@ -5,6 +5,7 @@
 #include "renderer/scene/clusters.h"
 #include "renderer/scene/scene.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace st {
@@ -18,6 +19,9 @@ class SceneGpu {
 public:
     explicit SceneGpu(const Scene& scene);
     const Scene& scene() const { return *scene_; }
+    // Unique to this object among all made in the process: what a cache keyed on "this scene's
+    // geometry on the GPU" keys on (an address can be reused by the next one).
+    std::uint64_t serial() const { return serial_; }
     void bindGeometry() const;
     // Binds the item's MaterialBlock (ST_BLOCK_MATERIAL) and base-colour texture, then draws
     // the item's triangles.
@@ -34,6 +38,7 @@ private:
     void bindMaterial(int material, FaceCulling culling) const;
 
     const Scene* scene_;
+    std::uint64_t serial_;
     gpu::Buffer vertices_;
     gpu::Buffer indices_;
     gpu::VertexArray vao_;

@@ -92,10 +92,21 @@ std::string nameLogFiles(const std::string& log, const std::vector<std::string>&
     return out;
 }
 
+namespace {
+// `defines` after the #version line (which must come first), the next line numbered as it was.
+void insertDefines(ExpandedShader& shader, const std::string& defines) {
+    if (defines.empty()) return;
+    const std::size_t versionEnd = shader.text.find('\n');
+    if (versionEnd == std::string::npos) throw std::runtime_error("shader " + shader.files.at(0) + " has one line");
+    shader.text.insert(versionEnd + 1, defines + lineDirective(0, 2));
+}
+}  // namespace
+
 gpu::Program linkShaderFiles(const std::string& vertexFile, const std::string& fragmentFile,
-                             const std::string& name, const ShaderSources& sources) {
+                             const std::string& name, const ShaderSources& sources, const std::string& fragmentDefines) {
     const ExpandedShader vs = expandShader(vertexFile, sources);
-    const ExpandedShader fs = expandShader(fragmentFile, sources);
+    ExpandedShader fs = expandShader(fragmentFile, sources);
+    insertDefines(fs, fragmentDefines);
     try {
         return gpu::linkProgram(vs.text, fs.text, name);
     } catch (const gpu::ShaderCompileError& e) {
@@ -113,9 +124,10 @@ SharedProgram sharedProgram(const std::string& key, const std::function<gpu::Pro
     return p;
 }
 
-SharedProgram sharedShaderProgram(const std::string& vertexFile, const std::string& fragmentFile, const std::string& name) {
-    return sharedProgram(vertexFile + "|" + fragmentFile + "|" + name,
-                         [&] { return linkShaderFiles(vertexFile, fragmentFile, name); });
+SharedProgram sharedShaderProgram(const std::string& vertexFile, const std::string& fragmentFile, const std::string& name,
+                                  const std::string& fragmentDefines) {
+    return sharedProgram(vertexFile + "|" + fragmentFile + "|" + name + "|" + fragmentDefines,
+                         [&] { return linkShaderFiles(vertexFile, fragmentFile, name, embeddedShaders(), fragmentDefines); });
 }
 
 }  // namespace st

@@ -28,9 +28,11 @@ ExpandedShader expandShader(const std::string& file, const ShaderSources& source
 std::string nameLogFiles(const std::string& log, const std::vector<std::string>& files);
 
 // Compiles and links vertexFile + fragmentFile; throws std::runtime_error whose message names the
-// file and line of every compile error.
+// file and line of every compile error. fragmentDefines ("#define NAME VALUE" lines) go right
+// after the fragment shader's #version line.
 gpu::Program linkShaderFiles(const std::string& vertexFile, const std::string& fragmentFile,
-                             const std::string& name, const ShaderSources& sources = embeddedShaders());
+                             const std::string& name, const ShaderSources& sources = embeddedShaders(),
+                             const std::string& fragmentDefines = {});
 
 // A program linked once and shared by every renderer and pass of the current context that asks
 // for the same files while one of them holds it. Why: llvmpipe JIT-compiles shader variants per
@@ -39,7 +41,8 @@ gpu::Program linkShaderFiles(const std::string& vertexFile, const std::string& f
 // evicted and recompiled frame after frame (docs/tuning.md#speed). Programs are per thread, as a
 // context is current on one thread; a thread must not switch contexts while it holds programs.
 using SharedProgram = std::shared_ptr<const gpu::Program>;
-SharedProgram sharedShaderProgram(const std::string& vertexFile, const std::string& fragmentFile, const std::string& name);
+SharedProgram sharedShaderProgram(const std::string& vertexFile, const std::string& fragmentFile, const std::string& name,
+                                  const std::string& fragmentDefines = {});
 // The same for a program `link` makes (a compute program), keyed by `key`.
 SharedProgram sharedProgram(const std::string& key, const std::function<gpu::Program()>& link);
 

@@ -102,6 +102,72 @@ TEST_F(MeasurePassGLTest, CascadesFollowTheCascadeCameraNotTheObserver) {
     EXPECT_GT(moved.cascade(nearGround), 0);  // 60 m away, that point is a far cascade's
 }
 
+// The hard test the shadow pass computes is the one main.frag shows, pixel for pixel, on every
+// path the pass is specialised for (storage, selection, receiver plane, blend band): 0 or 255
+// where the factor is binary, the blend's grey within a step in the band.
+TEST_F(MeasurePassGLTest, HardTestIsTheImagesOnEverySpecialisedPath) {
+    struct Case {
+        const char* name;
+        void (*apply)(Settings&);
+    };
+    const Case cases[] = {
+        {"array, interval", [](Settings&) {}},
+        {"array, map selection, normal offset", [](Settings& s) { s.cascades.selection = Selection::Map; s.bias.normalOffset = 1.0f; }},
+        {"atlas, receiver plane", [](Settings& s) { s.cascades.storage = CascadeStorage::Atlas; s.bias.receiverPlane = true; }},
+        {"textures, blend band", [](Settings& s) { s.cascades.storage = CascadeStorage::Textures; s.cascades.blendBand = 0.2f; }},
+    };
+    for (const Case& c : cases) {
+        Settings settings = test::presetAtTestSize("default");
+        settings.filter.kind = FilterKind::Hard;
+        c.apply(settings);
+        const auto [img, s] = renderAndSample(settings, View::Shadow);
+        int compared = 0, dark = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            if (!s.receiver(i)) continue;
+            const int shown = img.pixels[4 * i];  // N.L > 0 here
+            ASSERT_NEAR(float(shown), 255.0f * encodeSrgb(s.shadow[i].y), 1.0f)
+                << c.name << ", pixel " << i % s.width << "," << i / s.width;
+            // Outside the blend band the factor is the hard test itself.
+            if (s.shadow[i].y == 0.0f || s.shadow[i].y == 1.0f) ASSERT_EQ(s.shadow[i].x, s.shadow[i].y) << c.name;
+            ++compared, dark += shown == 0;
+        }
+        EXPECT_GT(compared, 20000) << c.name;
+        EXPECT_GT(dark, 100) << c.name;
+    }
+}
+
+// A view's surfaces are drawn once: candidates that change only shadow settings reuse them and
+// read what a fresh pass reads; another camera or sun draws them again.
+TEST_F(MeasurePassGLTest, SurfacesAreKeptPerViewAndSunNotPerShadowSetting) {
+    Settings first = test::presetAtTestSize("default");
+    auto& e = session_.entryFor(first, ST_PRESET_DIR);
+    MeasurePass pass;
+    metrics::sampleFrame(*e.renderer, pass, first, first);
+    Settings second = first;
+    second.filter.kind = FilterKind::PcfNxN;
+    second.bias.slope *= 2.0f;
+    second.cascades.mapSize /= 2;
+    const MeasureSamples kept = metrics::sampleFrame(*e.renderer, pass, second, second);
+    EXPECT_EQ(pass.surfacesDrawn(), 1u);
+    EXPECT_EQ(pass.surfacesReused(), 1u);
+    MeasurePass fresh;
+    const MeasureSamples drawn = metrics::sampleFrame(*e.renderer, fresh, second, second);
+    EXPECT_EQ(kept.position, drawn.position);
+    EXPECT_EQ(kept.normal, drawn.normal);
+    EXPECT_EQ(kept.geometry, drawn.geometry);
+    EXPECT_EQ(kept.shadow, drawn.shadow);
+
+    Settings moved = second;
+    moved.camera.position.x += 1.0f;
+    metrics::sampleFrame(*e.renderer, pass, moved, moved);
+    EXPECT_EQ(pass.surfacesDrawn(), 2u);
+    Settings sun = second;
+    sun.light.azimuth += 10.0f;
+    const MeasureSamples lit = metrics::sampleFrame(*e.renderer, pass, sun, sun);
+    EXPECT_EQ(pass.surfacesDrawn(), 3u);
+    EXPECT_NE(lit.normal, kept.normal);  // N.L moved with the sun
+}
+
 TEST_F(MeasurePassGLTest, CoveredShadowTexelsAreCounted) {
     const Settings s = test::presetAtTestSize("box-over-plane");
     auto& e = session_.entryFor(s, ST_PRESET_DIR);
