@@ -4,6 +4,7 @@
 #include "renderer/settings/validation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 
@@ -23,6 +24,32 @@ std::string text(const nlohmann::json& v) { return v.is_string() ? v.get<std::st
 
 // Dimensions that trade cost against each other at the budget's edge: one up, another down.
 constexpr const char* kCostDims[] = {"cascades.count", "cascades.mapSize", "cascades.shadowDistance"};
+
+// A cascade fewer or more on manual splits, the others kept where they are (a count move alone
+// computes every split again from lambda): fewer drops the farthest split, more puts one at the
+// geometric middle of the last slice. Nothing when the scheme is not manual.
+std::vector<std::pair<std::string, Settings>> manualCountMoves(const Settings& base) {
+    std::vector<std::pair<std::string, Settings>> out;
+    const CascadeSettings& c = base.cascades;
+    if (c.scheme != SplitScheme::Manual || c.manualSplits.size() != std::size_t(c.count - 1)) return out;
+    const float end = c.shadowDistance > 0.0f ? std::min(c.shadowDistance, base.camera.farPlane) : base.camera.farPlane;
+    for (int delta : {-1, 1}) {
+        std::vector<float> splits = c.manualSplits;
+        if (delta < 0 && splits.empty()) continue;
+        if (delta < 0) splits.pop_back();
+        else splits.push_back(std::sqrt((splits.empty() ? base.camera.nearPlane : splits.back()) * end));
+        try {
+            Settings s = withFieldJson(base, "cascades.count", c.count + delta);
+            s.cascades.scheme = SplitScheme::Manual;
+            s.cascades.manualSplits = splits;
+            out.emplace_back("cascades.count " + std::to_string(c.count) + " -> " + std::to_string(c.count + delta) +
+                                 " (manual splits kept)",
+                             std::move(s));
+        } catch (const SettingsError&) {
+        }
+    }
+    return out;
+}
 
 class Walker {
 public:
@@ -101,6 +128,8 @@ public:
             if (*next == *cur) next = descend(*cur, true);
             if (!next) return finish();
             if (*next == *cur) next = pairMove(*cur);
+            if (!next) return finish();
+            if (*next == *cur) next = coupledMove(*cur);
             if (!next) return finish();
             if (*next == *cur) {
                 next = restart();
@@ -193,6 +222,29 @@ private:
                 if (!k) return std::nullopt;
                 if (better(at(*k), at(cur))) return k;
             }
+        }
+        return cur;
+    }
+
+    // Moves that pay only together, when no single or cost-paired move helps: map selection reads
+    // a cascade's box past its split, where casters beyond the slice's depth are missing unless
+    // the box reaches toward the sun (the z-extension); and a cascade fewer or more on manual
+    // splits (manualCountMoves). Each is screened first, like a descent's neighbour.
+    std::optional<std::size_t> coupledMove(std::size_t cur) {
+        const Settings base = at(cur).settings;
+        std::vector<std::pair<std::string, Settings>> tries = manualCountMoves(base);
+        const Dimension* selection = space_.find("cascades.selection");
+        const Dimension* extension = space_.find("cascades.zExtension");
+        if (selection && extension)
+            for (auto& [j, mid] : moves(base, *selection))
+                for (std::size_t k = 0; k < extension->values.size(); ++k)
+                    if (std::optional<Settings> s = tryValue(mid, *extension, k); s && !(*s == mid))
+                        tries.emplace_back(moveText(base, *selection, j) + ", " + moveText(mid, *extension, k), std::move(*s));
+        for (auto& [move, s] : tries) {
+            if (!seen(s) && !worthEvaluating(s, cur)) continue;
+            const auto k = visit(s, move);
+            if (!k) return std::nullopt;
+            if (better(at(*k), at(cur))) return k;
         }
         return cur;
     }

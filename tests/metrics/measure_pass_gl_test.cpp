@@ -136,6 +136,25 @@ TEST_F(MeasurePassGLTest, HardTestIsTheImagesOnEverySpecialisedPath) {
     }
 }
 
+// The filtered factor is the image's for every filter kind: each is its own specialised program.
+TEST_F(MeasurePassGLTest, FilteredFactorIsTheImagesForEveryFilterKind) {
+    for (FilterKind kind : {FilterKind::Pcf2x2, FilterKind::PcfNxN, FilterKind::Vsm, FilterKind::Evsm2,
+                            FilterKind::Evsm4, FilterKind::Msm, FilterKind::Pcss}) {
+        Settings settings = test::presetAtTestSize("default");
+        settings.filter.kind = kind;
+        const auto [img, s] = renderAndSample(settings, View::Shadow);
+        int compared = 0, between = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            if (!s.receiver(i)) continue;
+            ASSERT_NEAR(float(img.pixels[4 * i]), 255.0f * encodeSrgb(s.shadow[i].y), 1.0f)
+                << int(kind) << ", pixel " << i % s.width << "," << i / s.width;
+            ++compared, between += s.shadow[i].y > 0.05f && s.shadow[i].y < 0.95f;
+        }
+        EXPECT_GT(compared, 20000) << int(kind);
+        EXPECT_GT(between, 20) << int(kind) << ": a filter softens some edge";
+    }
+}
+
 // A view's surfaces are drawn once: candidates that change only shadow settings reuse them and
 // read what a fresh pass reads; another camera or sun draws them again.
 TEST_F(MeasurePassGLTest, SurfacesAreKeptPerViewAndSunNotPerShadowSetting) {

@@ -115,6 +115,65 @@ TEST(TuneSearchTest, AStartOverTheBudgetWalksBackIntoIt) {
     EXPECT_FALSE(r.evaluated.front().feasible);
 }
 
+Space spaceOf(std::initializer_list<const char*> paths) {
+    const Space all = defaultSpace(Settings{});
+    Space s;
+    for (const char* p : paths) s.dims.push_back(*all.find(p));
+    return s;
+}
+
+// Map selection alone loses casters (no z-extension), a z-extension alone only costs: together
+// they are the best point, which no single move reaches. The coupled move does.
+TEST(TuneSearchTest, MapSelectionAndAZExtensionAreTriedTogether) {
+    const Space space = spaceOf({"cascades.selection", "cascades.zExtension", "cascades.stabilize"});
+    Settings start;
+    start.cascades.selection = Selection::Interval;
+    start.cascades.zExtension = ZExtension::None;
+    const auto eval = [](const Settings& s) {
+        Evaluation e;
+        const bool map = s.cascades.selection == Selection::Map;
+        const bool extended = s.cascades.zExtension != ZExtension::None;
+        e.error = map ? (extended ? 0.5 : 2.0) : (extended ? 1.1 : 1.0);
+        e.costMs = 1.0;
+        return e;
+    };
+    SearchOptions opt;
+    opt.budget.ms = 2.0;
+    opt.evaluations = 8;
+    const SearchResult r = search({start}, space, eval, opt);
+    ASSERT_TRUE(r.best);
+    EXPECT_EQ(r.evaluated[*r.best].eval.error, 0.5);
+    EXPECT_EQ(r.evaluated[*r.best].move.rfind("cascades.selection interval -> map, cascades.zExtension", 0), 0u)
+        << r.evaluated[*r.best].move;
+}
+
+// One cascade fewer with the near split kept is the best point; the count dimension alone turns the
+// splits practical (the near split moves), and a lambda move does too.
+TEST(TuneSearchTest, ACountMoveOnManualSplitsCanKeepThem) {
+    const Space space = spaceOf({"cascades.count", "cascades.lambda"});
+    Settings start;
+    start.cascades.count = 3;
+    start.cascades.scheme = SplitScheme::Manual;
+    start.cascades.manualSplits = {25.0f, 90.0f};
+    const auto eval = [](const Settings& s) {
+        Evaluation e;
+        const bool nearKept = s.cascades.scheme == SplitScheme::Manual && !s.cascades.manualSplits.empty() &&
+                              s.cascades.manualSplits.front() == 25.0f;
+        e.error = std::abs(s.cascades.count - 2) + (nearKept ? 0.0 : 1.0);
+        e.costMs = 1.0;
+        return e;
+    };
+    SearchOptions opt;
+    opt.budget.ms = 2.0;
+    opt.evaluations = 12;
+    const SearchResult r = search({start}, space, eval, opt);
+    ASSERT_TRUE(r.best);
+    const Candidate& best = r.evaluated[*r.best];
+    EXPECT_EQ(best.eval.error, 0.0);
+    EXPECT_EQ(best.settings.cascades.manualSplits, std::vector<float>{25.0f});
+    EXPECT_EQ(best.move, "cascades.count 3 -> 2 (manual splits kept)");
+}
+
 // Successive halving: a screen that agrees with the full score lets the search skip full
 // evaluations of the neighbours that are no better, and it still reaches the best point.
 TEST(TuneSearchTest, AScreenSkipsFullEvaluationsOfWorseNeighbours) {
