@@ -71,6 +71,20 @@ void claimFolder(const fs::path& dir, const Json& identity) {
     writeTextAtomic(file, identity.dump(2) + "\n");
 }
 
+// The wall-clock seconds earlier runs of the tune in `dir` spent (progress.json's
+// "secondsAllRuns"; 0 without one): a resumed tune's time is theirs plus its own.
+double earlierSeconds(const fs::path& dir) {
+    std::ifstream in(dir / "progress.json");
+    if (!in) return 0.0;
+    try {
+        const Json j = Json::parse(in);
+        const auto it = j.find("secondsAllRuns");
+        return it != j.end() && it->is_number() && it->get<double>() >= 0.0 ? it->get<double>() : 0.0;
+    } catch (const nlohmann::json::exception&) {
+        return 0.0;  // a progress file is rewritten whole; an unreadable one only loses the old time
+    }
+}
+
 // The cheapest settings of the space on the input's scene: if they miss the budget, nothing fits.
 Settings cheapest(Settings s) {
     s.cascades.count = 1;
@@ -147,6 +161,8 @@ public:
         views_ = tuneViews(input_, opt_.views, opt_.holdOutEvery);
         references();
         claimFolder(opt_.outDir, identity());
+        start_ = t0;
+        earlierSeconds_ = earlierSeconds(opt_.outDir);
         journal_.emplace(opt_.outDir, opt_.shard);
         resumed_ = int(journal_->size());
         if (resumed_ > 0) say("resuming: " + std::to_string(resumed_) + " evaluations journaled in " + opt_.outDir.string());
@@ -430,6 +446,7 @@ private:
                                {"input", pointJson(judge(measured(input_, "tuned"), objective_))},
                                {"references", refs},
                                {"best", best ? pointJson((*evaluated)[*best].eval) : Json(nullptr)},
+                               {"secondsAllRuns", secondsAllRuns()},
                                {"points", points}};
         writeTextAtomic(opt_.outDir / "progress.json", progress.dump() + "\n");
     }
@@ -538,6 +555,7 @@ private:
                               {"screenings", result_.screenings}, {"screenedOut", result_.screenedOut}}},
                   {"seed", opt_.seed},
                   {"seconds", seconds},
+                  {"secondsAllRuns", earlierSeconds_ + seconds},
                   {"input", {{"tuned", evalJson(inputEval)}}},
                   {"tuned", {{"tuned", evalJson(best.eval)}}},
                   {"references", Json::object()}};
@@ -608,6 +626,11 @@ private:
     Objective objective_;
     SearchResult result_;
     int made_ = 0, resumed_ = 0, fromShards_ = 0;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    double earlierSeconds_ = 0.0;  // of the runs this one resumed
+    double secondsAllRuns() const {
+        return earlierSeconds_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
     bool othersSilent_ = false;  // a shard wrote nothing in opt_.shardWaitSeconds
     Settings planFrom_;           // the search's current round (plan())
     std::vector<Settings> plan_;

@@ -80,8 +80,11 @@ check "a shard past the count exits 2" "[[ $? -eq 2 ]] && grep -q 'expected k/n 
 run --out "$work/cut" --stop-after 6 >"$work/cut.log" 2>&1
 made=$(wc -l <"$work/cut/evaluations.jsonl")
 check "a stopped tune keeps the evaluations made ($made)" "[[ $made -eq 6 ]] && [[ ! -e '$work/cut/tuned.json' ]]"
+earlier=$(jq .secondsAllRuns "$work/cut/progress.json")
 run --out "$work/cut" >"$work/resume.log" 2>&1
 check "the same command resumes" "[[ $? -eq 0 ]] && grep -q 'resuming: $made evaluations journaled' '$work/resume.log'"
+check "its time counts the stopped run's ($earlier s) and its own" \
+  "jq -e --argjson b '$earlier' '\$b > 0 and .seconds > 0 and ((.secondsAllRuns - .seconds - \$b) | if . < 0 then -. else . end) < 0.001' '$work/cut/summary.json' >/dev/null"
 check "and reaches the uninterrupted run's tuned.json" "cmp -s '$work/whole/tuned.json' '$work/cut/tuned.json'"
 check "the same seed gives the same explanation" "cmp -s '$work/whole/explain.json' '$work/cut/explain.json'"
 
