@@ -122,6 +122,20 @@ Space spaceOf(std::initializer_list<const char*> paths) {
     return s;
 }
 
+// A search of `space` from `start` where every point costs 1 "ms" of a 2 "ms" budget: only the
+// error, `error(s)`, decides.
+SearchResult searchByError(const Space& space, const Settings& start, double (*error)(const Settings&), int evaluations) {
+    SearchOptions opt;
+    opt.budget.ms = 2.0;
+    opt.evaluations = evaluations;
+    return search({start}, space, [error](const Settings& s) {
+        Evaluation e;
+        e.error = error(s);
+        e.costMs = 1.0;
+        return e;
+    }, opt);
+}
+
 // Map selection alone loses casters (no z-extension), a z-extension alone only costs: together
 // they are the best point, which no single move reaches. The coupled move does.
 TEST(TuneSearchTest, MapSelectionAndAZExtensionAreTriedTogether) {
@@ -129,18 +143,11 @@ TEST(TuneSearchTest, MapSelectionAndAZExtensionAreTriedTogether) {
     Settings start;
     start.cascades.selection = Selection::Interval;
     start.cascades.zExtension = ZExtension::None;
-    const auto eval = [](const Settings& s) {
-        Evaluation e;
+    const SearchResult r = searchByError(space, start, [](const Settings& s) {
         const bool map = s.cascades.selection == Selection::Map;
         const bool extended = s.cascades.zExtension != ZExtension::None;
-        e.error = map ? (extended ? 0.5 : 2.0) : (extended ? 1.1 : 1.0);
-        e.costMs = 1.0;
-        return e;
-    };
-    SearchOptions opt;
-    opt.budget.ms = 2.0;
-    opt.evaluations = 8;
-    const SearchResult r = search({start}, space, eval, opt);
+        return map ? (extended ? 0.5 : 2.0) : (extended ? 1.1 : 1.0);
+    }, 8);
     ASSERT_TRUE(r.best);
     EXPECT_EQ(r.evaluated[*r.best].eval.error, 0.5);
     EXPECT_EQ(r.evaluated[*r.best].move.rfind("cascades.selection interval -> map, cascades.zExtension", 0), 0u)
@@ -155,18 +162,11 @@ TEST(TuneSearchTest, ACountMoveOnManualSplitsCanKeepThem) {
     start.cascades.count = 3;
     start.cascades.scheme = SplitScheme::Manual;
     start.cascades.manualSplits = {25.0f, 90.0f};
-    const auto eval = [](const Settings& s) {
-        Evaluation e;
+    const SearchResult r = searchByError(space, start, [](const Settings& s) {
         const bool nearKept = s.cascades.scheme == SplitScheme::Manual && !s.cascades.manualSplits.empty() &&
                               s.cascades.manualSplits.front() == 25.0f;
-        e.error = std::abs(s.cascades.count - 2) + (nearKept ? 0.0 : 1.0);
-        e.costMs = 1.0;
-        return e;
-    };
-    SearchOptions opt;
-    opt.budget.ms = 2.0;
-    opt.evaluations = 12;
-    const SearchResult r = search({start}, space, eval, opt);
+        return std::abs(s.cascades.count - 2) + (nearKept ? 0.0 : 1.0);
+    }, 12);
     ASSERT_TRUE(r.best);
     const Candidate& best = r.evaluated[*r.best];
     EXPECT_EQ(best.eval.error, 0.0);
