@@ -111,15 +111,17 @@ MeasureSession::CachedTruth& cachedTruth(MeasureSession::SceneEntry& e, const Me
                                          glm::vec3 eye) {
     auto& views = e.views;
     const auto same = [&](const MeasureSession::CachedTruth& c) {
-        return c.toSun == toSun && c.eye == eye && c.positions == samples.position && c.normals == samples.normal &&
-               c.geometry == samples.geometry;
+        if (c.toSun != toSun || c.eye != eye) return false;
+        if (samples.surface != 0 && c.surface == samples.surface) return true;  // the very surfaces traced
+        return c.positions == samples.position && c.normals == samples.normal && c.geometry == samples.geometry;
     };
     if (const auto it = std::find_if(views.begin(), views.end(), same); it != views.end()) {
         std::rotate(views.begin(), it, it + 1);
+        if (samples.surface != 0) views.front().surface = samples.surface;
         return views.front();
     }
     MeasureSession::CachedTruth c{samples.position, samples.normal, samples.geometry, toSun, eye,
-                                  e.truth->trace(samples, toSun, eye), std::nullopt, {}};
+                                  e.truth->trace(samples, toSun, eye), std::nullopt, {}, {}, samples.surface};
     views.insert(views.begin(), std::move(c));
     if (views.size() > MeasureSession::kCachedViews) views.pop_back();
     return views.front();

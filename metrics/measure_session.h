@@ -99,6 +99,7 @@ public:
         std::optional<SunDisc> disc;
         SoftTruth soft;
         SoftTruthRegions softRegions;  // of `soft` on these surfaces: what every candidate's scoring shares
+        std::uint64_t surface = 0;     // MeasureSamples::surface of the samples last matched (0: none)
     };
     // A tune alternates between a few views; each keeps its truth (most recently used first).
     static constexpr std::size_t kCachedViews = 8;

@@ -7,6 +7,7 @@
 #include "shaders/interface.h"
 
 #include <algorithm>
+#include <atomic>
 #include <iterator>
 #include <string>
 
@@ -59,8 +60,10 @@ MeasurePass::Surface& MeasurePass::surfaceFor(const Renderer& r, const SurfaceKe
         ++surfacesReused_;
         return surfaces_.front();
     }
+    static std::atomic<std::uint64_t> drawn{0};
     Surface fresh;
     fresh.key = key;
+    fresh.serial = ++drawn;
     fresh.position = floatTarget(key.width, key.height);
     fresh.normal = floatTarget(key.width, key.height);
     fresh.dx = floatTarget(key.width, key.height);
@@ -177,7 +180,7 @@ MeasureSamples MeasurePass::run(const Renderer& r, const Settings& s, const glm:
     readSurface(surface);
     drawShadow(r, s, surface);
     return {s.output.width, s.output.height, surface.readPosition, surface.readNormal,
-            read(shadow_, s.output.width, s.output.height), surface.readGeometry};
+            read(shadow_, s.output.width, s.output.height), surface.readGeometry, surface.serial};
 }
 
 std::vector<glm::vec4> MeasurePass::runShadowOnly(const Renderer& r, const Settings& s,

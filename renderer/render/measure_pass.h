@@ -65,6 +65,7 @@ private:
     };
     struct Surface {
         SurfaceKey key;
+        std::uint64_t serial = 0;  // MeasureSamples::surface
         gpu::Texture position, normal, dx, dy;  // what the shadow pass reads (RGBA32F)
         std::vector<glm::vec4> readPosition, readNormal, readGeometry;  // empty until first read back
         std::size_t bytes() const;

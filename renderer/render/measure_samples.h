@@ -4,6 +4,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace st {
@@ -16,6 +17,10 @@ struct MeasureSamples {
     std::vector<glm::vec4> shadow;    // x unfiltered test, y filtered factor, z cascade (-1 beyond
                                       // the shadow range), w screen pixels per shadow texel
     std::vector<glm::vec4> geometry;  // the triangle's own normal on the viewer's side; w = its N.L
+    // Which surface pass drew position, normal and geometry (unique in the process; 0: unknown):
+    // samples with the same nonzero id have the same surfaces, so a cache keyed on them need not
+    // compare the vectors (metrics/measure_session.cpp, the truth of a view).
+    std::uint64_t surface = 0;
     std::size_t size() const { return std::size_t(width) * std::size_t(height); }
     bool covered(std::size_t i) const { return position[i].w > 0.0f; }
     int cascade(std::size_t i) const { return static_cast<int>(shadow[i].z); }

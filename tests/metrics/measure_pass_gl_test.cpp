@@ -161,7 +161,7 @@ TEST_F(MeasurePassGLTest, SurfacesAreKeptPerViewAndSunNotPerShadowSetting) {
     Settings first = test::presetAtTestSize("default");
     auto& e = session_.entryFor(first, ST_PRESET_DIR);
     MeasurePass pass;
-    metrics::sampleFrame(*e.renderer, pass, first, first);
+    const MeasureSamples before = metrics::sampleFrame(*e.renderer, pass, first, first);
     Settings second = first;
     second.filter.kind = FilterKind::PcfNxN;
     second.bias.slope *= 2.0f;
@@ -175,10 +175,13 @@ TEST_F(MeasurePassGLTest, SurfacesAreKeptPerViewAndSunNotPerShadowSetting) {
     EXPECT_EQ(kept.normal, drawn.normal);
     EXPECT_EQ(kept.geometry, drawn.geometry);
     EXPECT_EQ(kept.shadow, drawn.shadow);
+    EXPECT_NE(kept.surface, 0u);
+    EXPECT_EQ(kept.surface, before.surface);  // what lets the truth cache skip comparing the vectors
+    EXPECT_NE(drawn.surface, kept.surface);
 
     Settings moved = second;
     moved.camera.position.x += 1.0f;
-    metrics::sampleFrame(*e.renderer, pass, moved, moved);
+    EXPECT_NE(metrics::sampleFrame(*e.renderer, pass, moved, moved).surface, kept.surface);
     EXPECT_EQ(pass.surfacesDrawn(), 2u);
     Settings sun = second;
     sun.light.azimuth += 10.0f;
