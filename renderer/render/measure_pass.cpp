@@ -35,15 +35,14 @@ gpu::Texture floatTarget(int width, int height) {
 }
 }  // namespace
 
-MeasurePass::MeasurePass() {
+MeasurePass::MeasurePass(std::size_t surfaceBytes) : surfaceBudget_(surfaceBytes) {
     surfaceProgram_ = sharedShaderProgram("main.vert", "measure_surface.frag", "measure surface");
     emptyVao_ = gpu::createVertexArray();
 }
 
-std::size_t MeasurePass::Surface::bytes() const {
-    const std::size_t pixels = std::size_t(key.width) * std::size_t(key.height);
-    const std::size_t read = readPosition.size() + readNormal.size() + readGeometry.size();
-    return (4 * pixels + read) * sizeof(glm::vec4);
+// Four float targets on the GPU and, once read back, three copies: what a kept surface can take.
+std::size_t MeasurePass::SurfaceKey::bytes() const {
+    return 7 * std::size_t(width) * std::size_t(height) * sizeof(glm::vec4);
 }
 
 void MeasurePass::drawScene(const Renderer& r) const {
@@ -51,14 +50,20 @@ void MeasurePass::drawScene(const Renderer& r) const {
     for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(item, FaceCulling::PerMaterial);
 }
 
-// The kept surface of `key`, moved to the front, or a new one drawn at the front (dropping the
-// least recently used while the kept ones take more than kSurfaceBytes).
+// The kept surface of `key`, moved to the front, or a new one drawn at the front. Before it is
+// made, the least recently used are dropped until the new one fits in the budget with them
+// (at 1920x1080 one takes 232 MB: the old one goes first, so the pass never holds two).
 MeasurePass::Surface& MeasurePass::surfaceFor(const Renderer& r, const SurfaceKey& key) {
     const auto same = std::find_if(surfaces_.begin(), surfaces_.end(), [&](const Surface& s) { return s.key == key; });
     if (same != surfaces_.end()) {
         surfaces_.splice(surfaces_.begin(), surfaces_, same);
         ++surfacesReused_;
         return surfaces_.front();
+    }
+    std::size_t kept = key.bytes();
+    for (auto it = surfaces_.begin(); it != surfaces_.end();) {
+        kept += it->key.bytes();
+        it = kept > surfaceBudget_ ? surfaces_.erase(it) : std::next(it);
     }
     static std::atomic<std::uint64_t> drawn{0};
     Surface fresh;
@@ -71,11 +76,6 @@ MeasurePass::Surface& MeasurePass::surfaceFor(const Renderer& r, const SurfaceKe
     surfaces_.push_front(std::move(fresh));
     drawSurface(r, surfaces_.front());
     ++surfacesDrawn_;
-    std::size_t bytes = 0;
-    for (auto it = surfaces_.begin(); it != surfaces_.end();) {
-        bytes += it->bytes();
-        it = it != surfaces_.begin() && bytes > kSurfaceBytes ? surfaces_.erase(it) : std::next(it);
-    }
     return surfaces_.front();
 }
 

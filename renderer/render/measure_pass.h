@@ -33,7 +33,8 @@ namespace st {
 
 class MeasurePass {
 public:
-    MeasurePass();  // needs a current GL 4.5 core context
+    // Needs a current GL 4.5 core context. Keeps surfaces of at most surfaceBytes (kSurfaceBytes).
+    explicit MeasurePass(std::size_t surfaceBytes = kSurfaceBytes);
 
     // Draws the scene of `r` seen through observerViewProj at s.output's size, testing shadows
     // against the cascades and maps of r's last render(s). View depth for cascade selection
@@ -48,8 +49,11 @@ public:
     std::size_t surfacesReused() const { return surfacesReused_; }
 
     // Kept surfaces, most recently used first, while they take at most this many bytes (GPU and
-    // read-back copies); the newest is always kept. A tune alternates between about five views.
+    // read-back copies); the newest is always kept. A tune alternates between about five views
+    // (26 MB each at 640x360).
     static constexpr std::size_t kSurfaceBytes = std::size_t(256) << 20;
+    // What one surface of width x height takes, kept and read back.
+    static std::size_t surfaceBytes(int width, int height) { return SurfaceKey{.width = width, .height = height}.bytes(); }
 
 private:
     // What a surface pass's output depends on: the scene's geometry on the GPU, the observer, the
@@ -62,13 +66,13 @@ private:
         int width = 0;
         int height = 0;
         bool operator==(const SurfaceKey&) const = default;
+        std::size_t bytes() const;  // what a surface of this size takes, kept and read back
     };
     struct Surface {
         SurfaceKey key;
         std::uint64_t serial = 0;  // MeasureSamples::surface
         gpu::Texture position, normal, dx, dy;  // what the shadow pass reads (RGBA32F)
         std::vector<glm::vec4> readPosition, readNormal, readGeometry;  // empty until first read back
-        std::size_t bytes() const;
     };
 
     Surface& surfaceFor(const Renderer& r, const SurfaceKey& key);
@@ -96,6 +100,7 @@ private:
     // filter.screenSpace: the mask drawn with this pass's own draws and observer at its size, by
     // the renderer's code, so the factor scored is the one the image of that camera shows.
     std::unique_ptr<ScreenShadow> screen_;
+    std::size_t surfaceBudget_;
     std::size_t surfacesDrawn_ = 0;
     std::size_t surfacesReused_ = 0;
 };

@@ -190,6 +190,25 @@ TEST_F(MeasurePassGLTest, SurfacesAreKeptPerViewAndSunNotPerShadowSetting) {
     EXPECT_NE(lit.normal, kept.normal);  // N.L moved with the sun
 }
 
+// The surfaces kept are the most recently used that fit the budget: room for one, two views
+// alternating draw every time; room for two, each view's once.
+TEST_F(MeasurePassGLTest, SurfacesKeptAreTheRecentOnesThatFitTheBudget) {
+    const Settings a = test::presetAtTestSize("default");
+    const Settings b = [&] {
+        Settings moved = a;
+        moved.camera.position.y += 2.0f;
+        return moved;
+    }();
+    auto& e = session_.entryFor(a, ST_PRESET_DIR);
+    const std::size_t one = MeasurePass::surfaceBytes(a.output.width, a.output.height);
+    for (const auto& [room, drawn] : {std::pair{one, 4u}, std::pair{2 * one, 2u}}) {
+        MeasurePass pass(room);
+        for (const Settings* s : {&a, &b, &a, &b}) metrics::sampleFrame(*e.renderer, pass, *s, *s);
+        EXPECT_EQ(pass.surfacesDrawn(), drawn) << room << " bytes";
+        EXPECT_EQ(pass.surfacesReused(), 4u - drawn) << room << " bytes";
+    }
+}
+
 TEST_F(MeasurePassGLTest, CoveredShadowTexelsAreCounted) {
     const Settings s = test::presetAtTestSize("box-over-plane");
     auto& e = session_.entryFor(s, ST_PRESET_DIR);
