@@ -63,6 +63,9 @@ struct FrameStats {
     double gpuDepthBoundsMs = 0.0;  // depth prepass and reduction (0 without them)
     double cpuMs = 0.0;        // CPU time to plan and submit the frame
     std::size_t mainTriangles = 0;  // submitted by the main pass after frustum culling of clusters
+    // RenderOptions::shadeMain off and the same camera and size as the last frame's unshaded main
+    // pass: it was not drawn again, and work.main is that pass's (Renderer::keptMain_).
+    bool mainKept = false;
     int mainDraws = 0;
     int mainRanges = 0;        // draw commands: the index ranges of mainDraws' multi-draws (naive: = mainDraws)
     FrameWork work;            // counted work per pass (pass_work.h), filled by Renderer::render

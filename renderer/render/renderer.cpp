@@ -107,10 +107,20 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.screenShadowBytes = screen_->bytes();
         stats.filterMapBytes += stats.screenShadowBytes;
     }
+    const glm::mat4 mainViewProj = plan_.csProj * plan_.vsView;
+    const bool keptMain = s.output.view != View::Side && reusesMain(mainViewProj, screen);
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
-    else
-        mainPass(s, plan_.csProj * plan_.vsView, target_, screen);
+    else if (!keptMain)
+        mainPass(s, mainViewProj, target_, screen);
+    if (keptMain) {
+        timers_.begin(s.cascades.count);  // nothing drawn: a valid 0 ms for the main pass's timer
+        timers_.end(s.cascades.count);
+        mainTriangles_ = keptMain_->triangles, mainDraws_ = keptMain_->draws, mainRanges_ = keptMain_->ranges;
+    } else if (options_.shadeMain || s.output.view == View::Side) {
+        keptMain_.reset();  // the target now holds another image than the kept pass's
+    }
+    stats.mainKept = keptMain;
     stats.mainTriangles = mainTriangles_;
     stats.mainDraws = mainDraws_;
     stats.mainRanges = mainRanges_;
@@ -127,11 +137,21 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.gpuScreenBlurMs = screen_->blurMs();
         stats.gpuFilterMs += stats.gpuScreenShadowMs;
     }
-    countWork(s, reduce, moments, screen, stats);
+    countWork(s, reduce, moments, screen, stats, keptMain);
+    if (!options_.shadeMain && s.output.view != View::Side && !screen && !keptMain) {
+        PassWork counted = counters_.read(slots.main());
+        counted += ownWork_[std::size_t(slots.main())];
+        keptMain_ = KeptMain{mainViewProj, target_.width(), target_.height(), counted, mainTriangles_, mainDraws_, mainRanges_};
+    }
     return stats;
 }
 
-void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats) {
+bool Renderer::reusesMain(const glm::mat4& viewProj, bool screen) const {
+    return !options_.shadeMain && !screen && keptMain_ && keptMain_->viewProj == viewProj &&
+           keptMain_->width == target_.width() && keptMain_->height == target_.height();
+}
+
+void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats, bool keptMain) {
     const CounterSlots slots{s.cascades.count};
     auto slotWork = [&](int slot) {
         PassWork w = counters_.read(slot);
@@ -149,7 +169,7 @@ void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool scre
         c.drawnWork = held_[std::size_t(i)].drawnWork;
     }
     const csm::FilterTaps taps = csm::filterTapsPerFragment(s.filter, s.bias.receiverPlane);
-    fw.main = slotWork(slots.main());
+    fw.main = keptMain ? keptMain_->work : slotWork(slots.main());
     // With the screen-space path the main pass reads one R32F factor per fragment instead.
     addFilterReads(fw.main, screen ? csm::FilterTaps{1, 1, 4} : taps);
     if (reduce) fw.depthBounds = slotWork(slots.bounds());

@@ -27,6 +27,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace st {
@@ -109,7 +110,8 @@ private:
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
     // The counted work of the last render(): pipeline statistics of each slot plus the renderer's
     // own counts (pass_work.h).
-    void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats);
+    // keptMain: the main pass was not drawn; its work is keptMain_'s.
+    void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats, bool keptMain);
     SceneGpu scene_;
     SharedProgram depthProgram_;
     SharedProgram mainProgram_;
@@ -136,6 +138,19 @@ private:
     std::uint64_t visibleCommands_ = 0;  // draw commands of the last drawVisible (multi-draw ranges)
     std::vector<PassWork> ownWork_;      // the renderer's own counts of this frame, by counter slot
     int mainRanges_ = 0;
+    // RenderOptions::shadeMain off: the unshaded main pass's counted work and draw figures, kept
+    // while its camera and size stay. Nobody looks at its image, and its work does not depend on
+    // any shadow setting (the filter's taps are added from the settings), so the candidates of a
+    // tune's view draw it once.
+    struct KeptMain {
+        glm::mat4 viewProj{1.0f};
+        int width = 0, height = 0;
+        PassWork work;
+        std::size_t triangles = 0;
+        int draws = 0, ranges = 0;
+    };
+    std::optional<KeptMain> keptMain_;
+    bool reusesMain(const glm::mat4& viewProj, bool screen) const;
 };
 
 }  // namespace st

@@ -272,3 +272,35 @@ TEST_F(PassWorkGLTest, AnUnshadedMainPassCountsTheSameWork) {
         EXPECT_NE(r.readRgba8(), image) << "unshaded, the image is not the shaded one";
     }
 }
+
+// Unshaded, the main pass of the same camera is drawn once: the next frames keep its counted work
+// (their own filter's taps added) and its image, and count what a renderer drawing it afresh counts.
+TEST_F(PassWorkGLTest, AnUnshadedMainPassOfTheSameCameraIsKept) {
+    const Scene scene = sheetStack(2);
+    Renderer r(scene);
+    r.setOptions(RenderOptions{.shadeMain = false});
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.position = {0.3f, 0.2f, 6.0f};
+    s.camera.target = {0.0f, 0.0f, -1.0f};
+    EXPECT_FALSE(redrawn(r, s).mainKept);
+    for (FilterKind kind : {FilterKind::PcfNxN, FilterKind::Pcss}) {
+        s.filter.kind = kind;
+        const FrameStats kept = redrawn(r, s);
+        Renderer fresh(scene);
+        fresh.setOptions(RenderOptions{.shadeMain = false});
+        const FrameStats drawn = redrawn(fresh, s);
+        EXPECT_TRUE(kept.mainKept) << int(kind);
+        EXPECT_FALSE(drawn.mainKept);
+        EXPECT_EQ(kept.work, drawn.work) << int(kind);
+        EXPECT_EQ(kept.mainTriangles, drawn.mainTriangles);
+        EXPECT_EQ(r.readRgba8(), fresh.readRgba8());
+    }
+    s.camera.position.x += 0.5f;
+    EXPECT_FALSE(redrawn(r, s).mainKept) << "another camera draws it";
+    r.setOptions({});
+    EXPECT_FALSE(redrawn(r, s).mainKept) << "shaded, it is always drawn";
+    r.setOptions(RenderOptions{.shadeMain = false});
+    EXPECT_FALSE(redrawn(r, s).mainKept) << "after a shaded frame the target holds the shaded image";
+}
