@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <stdexcept>
 
 namespace st::metrics {
 
@@ -76,7 +77,10 @@ std::vector<Feature> defaultFeatures(PassKind k) {
             return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::TexelsCleared, F::LargeMapFragments};
         case PassKind::Main: return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::SamplesPassed, F::FilterTaps};
         case PassKind::Filter: return {F::Intercept, F::ClippedPrimitives, F::Fragments, F::FilterTaps};
-        case PassKind::DepthBounds: return {F::Intercept, F::Fragments, F::ComputeInvocations};
+        // A depth-only draw of the main pass's geometry (per draw, per primitive, per fragment, as
+        // a cascade), then the reduction's compute invocations.
+        case PassKind::DepthBounds:
+            return {F::Intercept, F::Draws, F::ClippedPrimitives, F::Fragments, F::ComputeInvocations};
     }
     return {};
 }
@@ -173,13 +177,51 @@ double frameFeature(const FrameWork& w, PassKind kind, Feature f) {
     }
     return 0.0;
 }
+
+// The frame's modelled time of `kind`, summed over its passes.
+double kindModelMs(const CostProfile& p, const FrameWork& w, PassKind kind) {
+    switch (kind) {
+        case PassKind::Cascade: {
+            double sum = 0.0;
+            for (const PassWork& c : w.cascades) sum += modelPass(p.pass(kind), c);
+            return sum;
+        }
+        case PassKind::Main: return modelPass(p.pass(kind), w.main);
+        case PassKind::Filter: return modelPass(p.pass(kind), w.filter);
+        case PassKind::DepthBounds: return modelPass(p.pass(kind), w.depthBounds);
+    }
+    return 0.0;
+}
+}  // namespace
+
+bool fittedOnOwnTimers(PassKind k) { return k == PassKind::DepthBounds; }
+
+namespace {
+std::vector<CalibrationSample> samplesOfKind(const std::vector<CalibrationSample>& samples, PassKind k) {
+    std::vector<CalibrationSample> out;
+    std::copy_if(samples.begin(), samples.end(), std::back_inserter(out),
+                 [k](const CalibrationSample& s) { return s.kind == k; });
+    return out;
+}
 }  // namespace
 
 CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
                                const std::vector<CalibrationSample>& passes, const FitOptions& opt) {
+    CostProfile p;
+    p.fittedOn = "frame minimum";
     std::vector<std::pair<PassKind, Feature>> columns;
-    for (PassKind k : kPassKinds)
-        for (Feature f : defaultFeatures(k)) columns.emplace_back(k, f);
+    for (PassKind k : kPassKinds) {
+        if (fittedOnOwnTimers(k)) p.pass(k) = fitPass(defaultFeatures(k), samplesOfKind(passes, k), opt);
+        else
+            for (Feature f : defaultFeatures(k)) columns.emplace_back(k, f);
+    }
+    // What the jointly fitted kinds must explain: the frame less the own-timer kinds' model.
+    const auto ownTimersMs = [&p](const FrameWork& w) {
+        double ms = 0.0;
+        for (PassKind k : kPassKinds)
+            if (fittedOnOwnTimers(k)) ms += kindModelMs(p, w, k);
+        return ms;
+    };
     Matrix a;
     std::vector<double> b;
     for (const CalibrationFrame& fr : frames) {
@@ -187,10 +229,8 @@ CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
         std::vector<double> row;
         for (const auto& [k, f] : columns) row.push_back(weight * frameFeature(fr.work, k, f));
         a.push_back(std::move(row));
-        b.push_back(weight * fr.minMs);
+        b.push_back(weight * std::max(fr.minMs - ownTimersMs(fr.work), 0.0));
     }
-    CostProfile p;
-    p.fittedOn = "frame minimum";
     const std::vector<double> x = frames.empty() ? std::vector<double>(columns.size(), 0.0) : nnls(a, b);
     for (std::size_t j = 0; j < columns.size(); ++j) {
         const auto& [k, f] = columns[j];
@@ -204,6 +244,7 @@ CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
     }
     p.frameR2 = rSquared(measured, modelled);
     for (PassKind k : kPassKinds) {
+        if (fittedOnOwnTimers(k)) continue;  // fitPass set its samples and R²
         std::vector<double> m, pred;
         for (const CalibrationSample& s : passes) {
             if (s.kind != k || !didWork(s.work)) continue;
@@ -217,6 +258,20 @@ CostProfile fitProfileOnFrames(const std::vector<CalibrationFrame>& frames,
     for (const CalibrationSample& s : passes)
         p.residuals.push_back({s.preset, s.pass, s.minMs, s.medianMs, modelPass(p.pass(s.kind), s.work)});
     return p;
+}
+
+CostProfile refitOnOwnTimers(CostProfile base, PassKind k, const std::vector<CalibrationSample>& samples,
+                             const std::string& calibrated, const FitOptions& opt) {
+    if (!fittedOnOwnTimers(k))
+        throw std::invalid_argument(std::string("the ") + passKindName(k) +
+                                    " pass is fitted jointly on frame totals; calibrate the whole profile");
+    const std::vector<CalibrationSample> ofKind = samplesOfKind(samples, k);
+    base.pass(k) = fitPass(defaultFeatures(k), ofKind, opt);
+    base.pass(k).calibrated = calibrated;
+    std::erase_if(base.residuals, [k](const Residual& r) { return r.pass == passKindName(k); });
+    for (const CalibrationSample& s : ofKind)
+        base.residuals.push_back({s.preset, s.pass, s.minMs, s.medianMs, modelPass(base.pass(k), s.work)});
+    return base;
 }
 
 }  // namespace st::metrics

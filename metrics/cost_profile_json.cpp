@@ -61,6 +61,7 @@ struct Reader {
         }
         m.r2 = number(v, path, "r2");
         m.samples = count(v, path, "samples");
+        if (v.contains("calibrated")) m.calibrated = text(v, path, "calibrated");
         return m;
     }
 
@@ -115,7 +116,9 @@ Json toJson(const CostProfile& p) {
         const PassModel& m = p.pass(k);
         Json coefficients = Json::object();
         for (const Term& t : m.terms) coefficients[featureName(t.feature)] = t.msPerUnit;
-        passes[passKindName(k)] = Json{{"coefficients", coefficients}, {"r2", m.r2}, {"samples", m.samples}};
+        Json pass{{"coefficients", coefficients}, {"r2", m.r2}, {"samples", m.samples}};
+        if (!m.calibrated.empty()) pass["calibrated"] = m.calibrated;
+        passes[passKindName(k)] = std::move(pass);
     }
     root["passes"] = passes;
     Json residuals = Json::array();

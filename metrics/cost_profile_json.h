@@ -6,9 +6,11 @@
 //   {"version": 1, "renderer": "llvmpipe (LLVM 15.0.7, 256 bits)", "machine": "...", "date": "...",
 //    "frames": 5, "fittedOn": "min",
 //    "passes": {"cascade": {"coefficients": {"intercept": 0.4, "fragments": 2.1e-6}, "r2": 0.97, "samples": 60},
-//               "main": {...}, "filter": {...}, "depthBounds": {...}},
+//               "main": {...}, "filter": {...},
+//               "depthBounds": {..., "calibrated": "Intel Xeon ..., 2026-12-03T03:50:00Z"}},
 //    "residuals": [{"preset": "default", "pass": "cascade 0", "minMs": 3.1, "medianMs": 3.4, "modelMs": 3.0}]}
 //
+// "calibrated" (optional) names where and when a kind was refitted alone (`calibrate --refit`).
 // Coefficients are milliseconds per unit of the feature (per fragment, per vertex, ...).
 #include "metrics/cost_model.h"
 

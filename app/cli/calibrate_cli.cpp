@@ -2,6 +2,7 @@
 #include "app/cli/calibrate_command.h"
 #include "app/cli/commands.h"
 #include "app/cli/size_option.h"
+#include "metrics/cost_model.h"
 
 #include <cstdio>
 #include <memory>
@@ -32,7 +33,18 @@ void addCalibrateCommand(CLI::App& cli, int& exitCode) {
                     "machine's speed drifts over minutes)")
         ->check(CLI::Range(1, 20))
         ->capture_default_str();
-    cmd->add_option("--profile", opt->profile, "With --check: the profile (default: the shipped llvmpipe profile)");
+    cmd->add_option("--profile", opt->profile,
+                    "With --check or --refit: the profile (default: the shipped llvmpipe profile)");
+    cmd->add_option("--refit", opt->refit,
+                    "Refit only this pass kind on its own timers (depthBounds), keeping --profile's other "
+                    "coefficients; times only the calibration points that run it")
+        ->check([](const std::string& kind) -> std::string {
+            const auto k = metrics::passKindFromName(kind);
+            if (!k) return "unknown pass kind '" + kind + "' (expected depthBounds)";
+            if (!metrics::fittedOnOwnTimers(*k))
+                return "the " + kind + " pass is fitted jointly on frame totals, not alone; run calibrate without --refit";
+            return "";
+        });
     cmd->add_option("--samples", opt->samples,
                     "Also write every timed point's counted work and frame times here (JSON lines)");
     cmd->add_flag("--debug-gl", opt->debugContext, "Debug context; GL errors fail the run");
@@ -44,6 +56,11 @@ void addCalibrateCommand(CLI::App& cli, int& exitCode) {
                 exitCode = 2;
                 return;
             }
+        }
+        if (!opt->refit.empty() && !opt->check.empty()) {
+            std::fprintf(stderr, "error: --refit and --check: choose one\n");
+            exitCode = 2;
+            return;
         }
         exitCode = runCalibrate(*opt);
     });

@@ -8,6 +8,7 @@
 #include "metrics/cost_profile_json.h"
 #include "metrics/model_error.h"
 #include "renderer/context/egl_context.h"
+#include "renderer/csm/cascade_plan.h"
 #include "renderer/gpu/debug_output.h"
 #include "renderer/render/pass_work_json.h"
 #include "renderer/render/scene_cache.h"
@@ -132,16 +133,32 @@ void printProfile(const metrics::CostProfile& p) {
     }
 }
 
-int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
-    const fs::path presetDir = opt.presetDir.empty() ? defaultPresetDir() : opt.presetDir;
-    const std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size, opt.sweeps);
+// Names the renderer by its first word ("llvmpipe", "NVIDIA", ...): a profile of another one
+// models another machine.
+bool sameRenderer(const std::string& a, const std::string& b) {
+    return a.substr(0, a.find(' ')) == b.substr(0, b.find(' '));
+}
+
+void warnIfOtherRenderer(const metrics::CostProfile& p, const HeadlessContext& ctx) {
+    if (!sameRenderer(p.renderer, ctx.rendererName()))
+        std::fprintf(stderr, "warning: the profile is for \"%s\", this is \"%s\"\n", p.renderer.c_str(),
+                     ctx.rendererName().c_str());
+}
+
+// The points' frames, each joined over opt.passes passes (points that failed are left out and
+// named in `failed`), logged to --samples.
+struct TimedPoints {
+    std::vector<std::string> names;
+    std::vector<metrics::TimedFrames> frames;
+    std::vector<std::string> failed;
+};
+
+TimedPoints timePoints(const CalibrateOptions& opt, const std::vector<CalibrationPoint>& points) {
     SceneCache<> scenes(true);  // one scene at a time: see SceneCache(bool)
-    std::vector<metrics::CalibrationSample> samples;
-    std::vector<std::pair<FrameWork, metrics::TimedFrames>> timed;
-    std::vector<std::string> failed, timedNames;
     SampleLog log(opt.samples);
     std::vector<std::optional<metrics::TimedFrames>> byPoint(points.size());
     std::vector<bool> broken(points.size(), false);
+    TimedPoints out;
     for (int pass = 0; pass < opt.passes; ++pass) {
         for (std::size_t i = 0; i < points.size(); ++i) {
             const CalibrationPoint& p = points[i];
@@ -154,7 +171,7 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
                 else byPoint[i] = std::move(t);
             } catch (const std::exception& e) {
                 std::fprintf(stderr, "%s %s: error: %s\n", counter.c_str(), p.name.c_str(), e.what());
-                failed.push_back(p.name);
+                out.failed.push_back(p.name);
                 broken[i] = true;
                 byPoint[i].reset();
             }
@@ -162,19 +179,37 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!byPoint[i]) continue;
-        metrics::TimedFrames& t = *byPoint[i];
-        log.add("", points[i].name, points[i].settings, t);
-        for (metrics::CalibrationSample& s : metrics::passSamples(points[i].name, t)) samples.push_back(std::move(s));
-        timed.emplace_back(t.work, std::move(t));
-        timedNames.push_back(points[i].name);
+        log.add("", points[i].name, points[i].settings, *byPoint[i]);
+        out.names.push_back(points[i].name);
+        out.frames.push_back(std::move(*byPoint[i]));
     }
+    return out;
+}
+
+std::vector<metrics::CalibrationSample> samplesOf(const TimedPoints& t) {
+    std::vector<metrics::CalibrationSample> samples;
+    for (std::size_t i = 0; i < t.frames.size(); ++i)
+        for (metrics::CalibrationSample& s : metrics::passSamples(t.names[i], t.frames[i])) samples.push_back(std::move(s));
+    return samples;
+}
+
+int reportFailed(const TimedPoints& t, std::size_t points) {
+    if (t.failed.empty()) return 0;
+    std::fprintf(stderr, "error: %zu of %zu calibration points failed (first: %s); the profile was fitted without them\n",
+                 t.failed.size(), points, t.failed.front().c_str());
+    return 1;
+}
+
+int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
+    const fs::path presetDir = opt.presetDir.empty() ? defaultPresetDir() : opt.presetDir;
+    const std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size, opt.sweeps);
+    const TimedPoints timed = timePoints(opt, points);
     std::vector<metrics::CalibrationFrame> frames;
-    for (const auto& [work, t] : timed) {
-        const std::vector<double> totals = metrics::frameTotalsMs(t);
-        frames.push_back({"", work, metrics::minimum(totals), metrics::median(totals)});
+    for (std::size_t i = 0; i < timed.frames.size(); ++i) {
+        const std::vector<double> totals = metrics::frameTotalsMs(timed.frames[i]);
+        frames.push_back({timed.names[i], timed.frames[i].work, metrics::minimum(totals), metrics::median(totals)});
     }
-    for (std::size_t i = 0; i < frames.size(); ++i) frames[i].preset = timedNames[i];
-    metrics::CostProfile profile = metrics::fitProfileOnFrames(frames, samples);
+    metrics::CostProfile profile = metrics::fitProfileOnFrames(frames, samplesOf(timed));
     profile.renderer = ctx.rendererName();
     profile.machine = machineText();
     profile.date = utcNow();
@@ -185,27 +220,42 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     std::printf("  frame totals: R² %.3f (%s)\n", profile.frameR2, profile.fittedOn.c_str());
     printProfile(profile);
     FrameComparison fit;
-    for (const auto& [work, t] : timed) fit.add(metrics::modelFrame(profile, work).totalMs, t);
+    for (const metrics::TimedFrames& t : timed.frames) fit.add(metrics::modelFrame(profile, t.work).totalMs, t);
     fit.print("calibration frames (in-sample)");
-    if (!failed.empty()) {
-        std::fprintf(stderr, "error: %zu of %zu calibration points failed (first: %s); the profile was fitted without them\n",
-                     failed.size(), points.size(), failed.front().c_str());
-        return 1;
-    }
-    return 0;
+    return reportFailed(timed, points.size());
 }
 
-// Names the renderer by its first word ("llvmpipe", "NVIDIA", ...): a profile of another one
-// models another machine.
-bool sameRenderer(const std::string& a, const std::string& b) {
-    return a.substr(0, a.find(' ')) == b.substr(0, b.find(' '));
+// --refit KIND: only the calibration points that run that pass are timed, and only its
+// coefficients change; the other kinds keep --profile's (metrics::refitOnOwnTimers).
+int refit(const CalibrateOptions& opt, const HeadlessContext& ctx) {
+    const metrics::PassKind kind = *metrics::passKindFromName(opt.refit);
+    const metrics::CostProfile base = loadCostProfileOption(opt.profile);
+    warnIfOtherRenderer(base, ctx);
+    const fs::path presetDir = opt.presetDir.empty() ? defaultPresetDir() : opt.presetDir;
+    std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size, opt.sweeps);
+    std::erase_if(points, [](const CalibrationPoint& p) { return !csm::needsSampleBounds(p.settings.cascades); });
+    if (points.empty()) throw std::runtime_error("no calibration point runs the " + opt.refit + " pass");
+    const TimedPoints timed = timePoints(opt, points);
+    const std::vector<metrics::CalibrationSample> samples = samplesOf(timed);
+    const metrics::CostProfile profile =
+        metrics::refitOnOwnTimers(base, kind, samples, machineText() + ", " + utcNow());
+    metrics::saveCostProfileAtomic(profile, opt.out);
+    std::printf("%s refitted on %d samples (R² %.3f against its timers), the other kinds kept from %s, in %s\n",
+                opt.refit.c_str(), profile.pass(kind).samples, profile.pass(kind).r2, metrics::profileName(base).c_str(),
+                opt.out.string().c_str());
+    printProfile(profile);
+    std::printf("pass\tpreset\tmeasured min ms\tmodel before ms\tmodel now ms\n");
+    for (const metrics::CalibrationSample& s : samples) {
+        if (s.kind != kind) continue;
+        std::printf("%s\t%s\t%.2f\t%.2f\t%.2f\n", s.pass.c_str(), s.preset.c_str(), s.minMs,
+                    metrics::modelPass(base.pass(kind), s.work), metrics::modelPass(profile.pass(kind), s.work));
+    }
+    return reportFailed(timed, points.size());
 }
 
 int check(const CalibrateOptions& opt, const HeadlessContext& ctx) {
     const metrics::CostProfile profile = loadCostProfileOption(opt.profile);
-    if (!sameRenderer(profile.renderer, ctx.rendererName()))
-        std::fprintf(stderr, "warning: the profile is for \"%s\", this is \"%s\"\n", profile.renderer.c_str(),
-                     ctx.rendererName().c_str());
+    warnIfOtherRenderer(profile, ctx);
     SceneCache<> scenes(true);  // one scene at a time: see SceneCache(bool)
     FrameComparison all;
     SampleLog log(opt.samples);
@@ -265,7 +315,7 @@ int runCalibrate(const CalibrateOptions& opt) {
         auto ctx = HeadlessContext::create(opt.debugContext);
         if (opt.debugContext) gpu::enableDebugOutput();
         const int before = gpu::seriousDebugMessageCount();
-        const int code = opt.check.empty() ? calibrate(opt, *ctx) : check(opt, *ctx);
+        const int code = !opt.check.empty() ? check(opt, *ctx) : !opt.refit.empty() ? refit(opt, *ctx) : calibrate(opt, *ctx);
         if (gpu::seriousDebugMessageCount() != before) {
             std::fprintf(stderr, "error: GL debug output reported errors\n");
             return 2;

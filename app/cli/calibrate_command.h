@@ -3,6 +3,7 @@
 // the profile; with --check, times sweep points instead and prints how well a profile's modelled
 // cost follows the measured times.
 #include <filesystem>
+#include <string>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -23,6 +24,9 @@ struct CalibrateOptions {
     // drifts over minutes, and the minimum over passes spread in time drifts less.
     int passes = 1;
     std::filesystem::path profile;
+    // --refit: the pass kind ("depthBounds") refitted alone on its own timers, the other kinds
+    // kept from `profile`; only the calibration points that run it are timed.
+    std::string refit;
     // --samples: every timed point's counted work and frame times, one JSON object per line, so a
     // profile can be refitted (or features tried) without timing again.
     std::filesystem::path samples;

@@ -46,6 +46,16 @@ constexpr Variant kVariants[] = {
     {"scenes/palm-tree-island.json", R"({"filter.kind": "pcf-nxn", "filter.size": 5})"},
     {"default.json", R"({"cascades.depthBounds": "fit", "output.width": 640, "output.height": 360})"},
     {"default.json", R"({"cascades.count": 2, "cascades.mapSize": 4096})"},
+    // The depth-bounds pass is fitted on its own timers (metrics::fittedOnOwnTimers): one frame per
+    // scene and size of the prepass's draws, primitives and fragments, and a sample fit.
+    {"default.json", R"({"cascades.depthBounds": "fit", "output.width": 320, "output.height": 180})"},
+    {"default.json", R"({"cascades.fit": "samples", "output.width": 1280, "output.height": 720})"},
+    {"scenes/dutch-ship.json", R"({"cascades.depthBounds": "fit"})"},
+    {"scenes/fox.json", R"({"cascades.depthBounds": "fit"})"},
+    {"scenes/living-room.json", R"({"cascades.depthBounds": "fit"})"},
+    {"scenes/palm-tree-island.json", R"({"cascades.depthBounds": "fit", "cascades.fit": "samples"})"},
+    {"scenes/zdm2-sauerbraten.json", R"({"cascades.depthBounds": "fit"})"},
+    {"scenes/truck-town.json", R"({"cascades.depthBounds": "fit", "cascades.fit": "samples", "output.width": 320, "output.height": 180})"},
     {"default.json", R"({"filter.kind": "vsm", "cascades.mapSize": 512})"},
     {"default.json", R"({"filter.kind": "pcf-nxn", "filter.size": 7, "output.width": 640, "output.height": 360})"},
     {"default.json", R"({"filter.kind": "pcss", "filter.size": 7, "output.width": 640, "output.height": 360})"},

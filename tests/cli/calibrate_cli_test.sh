@@ -35,5 +35,22 @@ check "--check exits 0" rc 0
 check "--check prints one line per point" out_has $'^two\tcount=2\t[0-9.]+\t[0-9.]+\t[0-9.]+$'
 check "--check prints the summary" out_has "^sweep points against llvmpipe.*: 2 frames; median"
 
+run calibrate --refit main
+check "--refit of a jointly fitted kind exits non-zero" test "$(cat "$work/rc")" != 0
+check "--refit of a jointly fitted kind says why" err_has "fitted jointly on frame totals"
+
+base=$presets/cost-profiles/llvmpipe.json
+# The calibration set is read from the presets folder of the working directory.
+(cd "$presets/.." && run calibrate --refit depthBounds --frames 1 --size 64x36 --out "$work/refit.json")
+check "--refit exits 0" rc 0
+check "--refit prints a line per depth-bounds point" \
+  out_has $'^depthBounds\ttruck-town depthBounds=fit\t[0-9.]+\t[0-9.]+\t[0-9.]+$'
+check "--refit records where the kind was fitted" grep -q '"calibrated": ' "$work/refit.json"
+section() { sed -n "/\"$1\": {/,/}/p" "$2"; }
+check "--refit keeps the cascade coefficients" diff <(section cascade "$base") <(section cascade "$work/refit.json")
+check "--refit keeps the main coefficients" diff <(section main "$base") <(section main "$work/refit.json")
+run calibrate --check "$work/two.json" --profile "$work/refit.json" --frames 1
+check "the refitted profile loads" rc 0
+
 echo "$failures failure(s)"
 ((failures == 0))

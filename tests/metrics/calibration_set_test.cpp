@@ -1,6 +1,7 @@
 // `shadowtune calibrate`'s fixed set: every shipped preset it names loads and validates, and the
 // set spans the work the sweeps ask for (sizes, map sizes, cascade counts, filters, depth bounds).
 #include "app/cli/calibration_set.h"
+#include "renderer/csm/cascade_plan.h"
 #include "sweep/sweep_spec.h"
 
 #include <gtest/gtest.h>
@@ -35,6 +36,21 @@ TEST(CalibrationSetTest, SpansTheSweptKnobs) {
     for (int size : {512, 1024, 2048, 4096}) EXPECT_TRUE(mapSizes.count(size)) << size;
     for (int count : {1, 2, 3, 4}) EXPECT_TRUE(counts.count(count)) << count;
     EXPECT_TRUE(widths.count(320) && widths.count(640));
+}
+
+// The depth-bounds pass is fitted on its own timers (metrics::fittedOnOwnTimers), so the set
+// needs enough frames of it to tell its terms apart: several scenes (draws, primitives) and sizes
+// (fragments, the reduction's invocations).
+TEST(CalibrationSetTest, TimesTheDepthBoundsPassOnSeveralScenesAndSizes) {
+    std::set<std::string> scenes;
+    std::set<int> widths;
+    for (const CalibrationPoint& p : calibrationSet(ST_PRESET_DIR)) {
+        if (!csm::needsSampleBounds(p.settings.cascades)) continue;
+        scenes.insert(p.name.substr(0, p.name.find(' ')));
+        widths.insert(p.settings.output.width);
+    }
+    EXPECT_GE(scenes.size(), 6u);
+    EXPECT_GE(widths.size(), 3u);
 }
 
 // scripts/bench_cost_model.sh judges the model on points 0, 7, 14, ... of the shipped sweeps

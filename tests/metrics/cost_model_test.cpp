@@ -225,6 +225,64 @@ TEST(CostModelTest, FitOnFramesReproducesExactTotals) {
         for (const Term& t : p.pass(k).terms) EXPECT_GE(t.msPerUnit, 0.0);
 }
 
+// A depth-bounds pass of a few ms in frames whose other passes the model misses by more: fitted
+// on frame totals its coefficients took that miss; fitted on its own timers they are its own.
+TEST(CostModelTest, DepthBoundsIsFittedOnItsOwnTimersNotOnTheFramesMiss) {
+    CostProfile truth = knownProfile();
+    truth.pass(PassKind::DepthBounds).terms = {{Feature::Intercept, 0.25}, {Feature::Draws, 0.0},
+                                               {Feature::ClippedPrimitives, 0.0}, {Feature::Fragments, 2e-6},
+                                               {Feature::ComputeInvocations, 1e-4}};
+    std::vector<CalibrationFrame> frames;
+    std::vector<CalibrationSample> passes;
+    for (int i = 1; i <= 12; ++i) {
+        FrameWork w;
+        w.cascades.push_back(work(300u * std::uint64_t(i), 150'000u * std::uint64_t(i % 5 + 1), 1'048'576u));
+        w.main = work(999u * std::uint64_t(i % 7 + 1), 57'600u * std::uint64_t(i));
+        if (i % 3 == 0) {
+            w.depthBounds = work(999u * std::uint64_t(i % 7 + 1), 20'000u * std::uint64_t(i));
+            w.depthBounds.computeInvocations = 3600u * std::uint64_t(i);
+        }
+        // The frames with the prepass run 10 % over their modelled cascades and main pass.
+        const ModelledCost m = modelFrame(truth, w);
+        const double miss = didWork(w.depthBounds) ? 0.1 * (m.shadowMs + m.mainMs) : 0.0;
+        frames.push_back({"p" + std::to_string(i), w, m.totalMs + miss, m.totalMs + miss});
+        if (didWork(w.depthBounds))
+            passes.push_back({"p" + std::to_string(i), PassKind::DepthBounds, "depthBounds", w.depthBounds,
+                              m.depthBoundsMs, m.depthBoundsMs});
+    }
+    EXPECT_TRUE(fittedOnOwnTimers(PassKind::DepthBounds));
+    const CostProfile p = fitProfileOnFrames(frames, passes);
+    EXPECT_EQ(p.pass(PassKind::DepthBounds).samples, 4);
+    EXPECT_NEAR(p.pass(PassKind::DepthBounds).r2, 1.0, 1e-9);
+    for (const CalibrationSample& s : passes)
+        EXPECT_NEAR(modelPass(p.pass(PassKind::DepthBounds), s.work), s.minMs, 1e-6 * s.minMs) << s.preset;
+}
+
+// --refit: only the named kind's coefficients and residuals change, and where it was fitted is
+// recorded on it and kept through JSON; a jointly fitted kind cannot be refitted alone.
+TEST(CostModelTest, RefitChangesOnlyItsKindAndSaysWhere) {
+    const CostProfile base = knownProfile();
+    std::vector<CalibrationSample> samples;
+    for (int i = 1; i <= 6; ++i) {
+        PassWork w = work(600u * std::uint64_t(i), 40'000u * std::uint64_t(i * i));
+        w.computeInvocations = 1000u * std::uint64_t(7 - i);
+        const double ms = 0.5 + 1e-6 * double(w.fragments) + 2e-4 * double(w.computeInvocations);
+        samples.push_back({"q" + std::to_string(i), PassKind::DepthBounds, "depthBounds", w, ms, ms});
+        samples.push_back({"q" + std::to_string(i), PassKind::Main, "main", work(9, 9), 99.0, 99.0});
+    }
+    const CostProfile p = refitOnOwnTimers(base, PassKind::DepthBounds, samples, "test machine B, 2026-12-03");
+    for (PassKind k : {PassKind::Cascade, PassKind::Main, PassKind::Filter}) EXPECT_EQ(p.pass(k), base.pass(k));
+    EXPECT_EQ(p.pass(PassKind::DepthBounds).samples, 6);
+    EXPECT_EQ(p.pass(PassKind::DepthBounds).calibrated, "test machine B, 2026-12-03");
+    ASSERT_EQ(p.residuals.size(), base.residuals.size() + 6);
+    for (std::size_t i = 0; i < base.residuals.size(); ++i) EXPECT_EQ(p.residuals[i], base.residuals[i]);
+    for (std::size_t i = base.residuals.size(); i < p.residuals.size(); ++i)
+        EXPECT_NEAR(p.residuals[i].modelMs, p.residuals[i].minMs, 1e-6 * p.residuals[i].minMs) << i;
+    EXPECT_EQ(costProfileFromJson(toJson(p), "mem"), p);
+    EXPECT_EQ(refitOnOwnTimers(p, PassKind::DepthBounds, samples, "again").residuals.size(), p.residuals.size());
+    EXPECT_THROW(refitOnOwnTimers(base, PassKind::Main, samples, "x"), std::invalid_argument);
+}
+
 TEST(CostProfileJsonTest, RoundTrip) {
     const CostProfile p = knownProfile();
     const std::string text = toJson(p).dump(2);
