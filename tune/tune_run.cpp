@@ -85,6 +85,22 @@ double earlierSeconds(const fs::path& dir) {
     }
 }
 
+// The screening limit of the first run of the tune in `dir` (progress.json's "screeningLimit",
+// or kScreensPerEvaluation times the "limit" of a folder written before it was kept); 0 for a new
+// folder. A resumed run keeps it, so its walk is the first run's continued (SearchOptions::screenings).
+int earlierScreeningLimit(const fs::path& dir) {
+    std::ifstream in(dir / "progress.json");
+    if (!in) return 0;
+    try {
+        const Json j = Json::parse(in);
+        for (const auto& [key, scale] : {std::pair<const char*, int>{"screeningLimit", 1}, {"limit", kScreensPerEvaluation}})
+            if (const auto it = j.find(key); it != j.end() && it->is_number_integer() && it->get<int>() > 0)
+                return it->get<int>() * scale;
+    } catch (const nlohmann::json::exception&) {
+    }
+    return 0;  // unreadable: the walk starts with this run's limit, as a new tune's would
+}
+
 // The cheapest settings of the space on the input's scene: if they miss the budget, nothing fits.
 Settings cheapest(Settings s) {
     s.cascades.count = 1;
@@ -163,6 +179,8 @@ public:
         claimFolder(opt_.outDir, identity());
         start_ = t0;
         earlierSeconds_ = earlierSeconds(opt_.outDir);
+        screeningLimit_ = earlierScreeningLimit(opt_.outDir);
+        if (screeningLimit_ == 0) screeningLimit_ = kScreensPerEvaluation * opt_.evaluations;
         journal_.emplace(opt_.outDir, opt_.shard);
         resumed_ = int(journal_->size());
         if (resumed_ > 0) say("resuming: " + std::to_string(resumed_) + " evaluations journaled in " + opt_.outDir.string());
@@ -208,6 +226,7 @@ private:
         SearchOptions so;
         so.budget = budget_;
         so.evaluations = opt_.evaluations;
+        so.screenings = screeningLimit_;
         so.seed = opt_.seed;
         so.stopRequested = [this] {
             return (opt_.stopRequested && opt_.stopRequested()) || (opt_.stopAfter >= 0 && made_ >= opt_.stopAfter);
@@ -440,6 +459,7 @@ private:
                                {"stage", stage},
                                {"evaluations", done},
                                {"limit", limit},
+                               {"screeningLimit", screeningLimit_},
                                {"objective", opt_.objective},
                                {"budgetMs", budget_.ms ? Json(*budget_.ms) : Json(nullptr)},
                                {"budgetBytes", budget_.bytes ? Json(*budget_.bytes) : Json(nullptr)},
@@ -628,6 +648,7 @@ private:
     int made_ = 0, resumed_ = 0, fromShards_ = 0;
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     double earlierSeconds_ = 0.0;  // of the runs this one resumed
+    int screeningLimit_ = 0;       // the first run's (earlierScreeningLimit)
     double secondsAllRuns() const {
         return earlierSeconds_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }

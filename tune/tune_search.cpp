@@ -92,7 +92,7 @@ public:
     // nullopt once the screenings are spent (then everything goes to full evaluation).
     bool worthEvaluating(const Settings& s, std::size_t cur) {
         if (!opt_.screen || !at(cur).feasible) return true;
-        if (out_.screenings >= kScreensPerEvaluation * opt_.evaluations) return true;
+        if (out_.screenings >= screeningLimit()) return true;
         const std::optional<Evaluation> mine = screened(s), theirs = screened(at(cur).settings);
         if (!mine || !theirs) return true;
         if (worthFullEvaluation(*mine, *theirs, at(cur).eval, opt_.budget)) return true;
@@ -146,6 +146,7 @@ public:
 
 private:
     const Candidate& at(std::size_t i) const { return out_.evaluated[i]; }
+    int screeningLimit() const { return opt_.screenings > 0 ? opt_.screenings : kScreensPerEvaluation * opt_.evaluations; }
     bool seen(const Settings& s) const { return seen_.count(toOrderedJson(s).dump()) != 0; }
 
     void report(const std::string& trying) {

@@ -62,6 +62,10 @@ struct SearchOptions {
     // when it beats the current point there too. Screenings do not count against `evaluations`
     // (at most kScreensPerEvaluation times as many are made).
     Evaluator screen;
+    // Screenings at most this many; 0: kScreensPerEvaluation * evaluations. A resumed tune passes
+    // its first run's, so a larger `evaluations` continues that walk (its first steps are the
+    // same) rather than starting another, which could end worse (docs/tuning.md#running).
+    int screenings = 0;
     std::uint64_t seed = 1;
     std::function<bool()> stopRequested;  // checked before each evaluation (Ctrl-C)
     std::function<void(const SearchProgress&)> progress;

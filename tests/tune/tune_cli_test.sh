@@ -88,6 +88,17 @@ check "its time counts the stopped run's ($earlier s) and its own" \
 check "and reaches the uninterrupted run's tuned.json" "cmp -s '$work/whole/tuned.json' '$work/cut/tuned.json'"
 check "the same seed gives the same explanation" "cmp -s '$work/whole/explain.json' '$work/cut/explain.json'"
 
+# More evaluations asked of a finished tune continue its walk (its first run's screening limit is
+# kept), so the result can only get better.
+before=$(jq '.tuned.tuned.error' "$work/cut/summary.json")
+lines=$(wc -l <"$work/cut/evaluations.jsonl")
+"$st" tune "$work/base.json" --budget-ms "$budget" --views 2 --hold-out-every 2 --evaluations 24 --seed $seed --size 96x54 \
+  --out "$work/cut" >"$work/more.log" 2>&1
+check "more evaluations resume the finished tune" "[[ $? -eq 0 ]] && grep -q 'resuming: $lines evaluations journaled' '$work/more.log'"
+check "and keep its screening limit (6 x 16)" "jq -e '.screeningLimit == 96 and .limit == 24' '$work/cut/progress.json' >/dev/null"
+check "and measure new points" "[[ \$(wc -l <'$work/cut/evaluations.jsonl') -gt $lines ]]"
+check "and end no worse ($before before)" "jq -e --argjson b '$before' '.tuned.tuned.error <= \$b' '$work/cut/summary.json' >/dev/null"
+
 # Ctrl-C once the third evaluation is under way: the run stops after it, exit 130, and keeps them.
 "$st" tune "$work/base.json" --budget-ms 1000 --size 320x180 --evaluations 500 --out "$work/int" >"$work/int.log" 2>&1 &
 pid=$!  # not through run(): the signal must reach shadowtune

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
+#include <string>
 
 namespace st::tune {
 namespace {
@@ -193,6 +195,40 @@ TEST(TuneSearchTest, AScreenSkipsFullEvaluationsOfWorseNeighbours) {
     EXPECT_GT(halving.screenedOut, 0);
     EXPECT_EQ(halving.screenings, screened);
     EXPECT_LT(halving.evaluationsToBest, plain.evaluationsToBest) << "the screened-out neighbours were not evaluated";
+}
+
+// A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
+// the shorter one continued (the same points in the same order, then more), so it never ends
+// worse. With the limit scaled to the new count the walk screens longer and goes elsewhere.
+TEST(TuneSearchTest, ALargerLimitWithTheFirstScreeningLimitContinuesTheWalk) {
+    const Space space = smallSpace();
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    // A screen that finds three neighbours in four worse than they are: the walk screens many
+    // per evaluation and reaches its screening limit early, as real tunes do.
+    opt.screen = [](const Settings& s) {
+        Evaluation e = bowl(s);
+        if (std::hash<std::string>{}(toOrderedJson(s).dump()) % 4 != 0) e.error += 1.0;
+        return e;
+    };
+    opt.evaluations = 10;
+    const SearchResult first = search({Settings{}}, space, bowl, opt);
+    ASSERT_EQ(first.screenings, kScreensPerEvaluation * 10) << "the limit must bind for this test to mean anything";
+    const auto prefixOf = [&](const SearchResult& longer) {
+        if (longer.evaluated.size() < first.evaluated.size()) return false;
+        for (std::size_t i = 0; i < first.evaluated.size(); ++i)
+            if (!(longer.evaluated[i].settings == first.evaluated[i].settings)) return false;
+        return true;
+    };
+    opt.evaluations = 40;
+    const SearchResult rescaled = search({Settings{}}, space, bowl, opt);
+    EXPECT_FALSE(prefixOf(rescaled)) << "with its own screening limit the longer walk is another walk";
+    opt.screenings = kScreensPerEvaluation * 10;
+    const SearchResult continued = search({Settings{}}, space, bowl, opt);
+    EXPECT_TRUE(prefixOf(continued));
+    EXPECT_GT(continued.evaluations, first.evaluations);
+    ASSERT_TRUE(first.best && continued.best);
+    EXPECT_LE(continued.evaluated[*continued.best].eval.error, first.evaluated[*first.best].eval.error);
 }
 
 // The second rung also predicts the full cost from the screens' ratio: a neighbour that screens
