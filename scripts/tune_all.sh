@@ -6,7 +6,9 @@
 # the folders into docs/tuning.md's tables.
 #   scripts/tune_all.sh [BUILD_DIR] [EVALUATIONS] [SIZE] [OUT] -- [REFERENCE.json ...]
 # Defaults: build/release, 40 evaluations, 320x180, out/tuned-runs, every seed preset and engine
-# default. Needs ../shared/assets.
+# default. Needs ../shared/assets. ONLY="run run ..." (names as <scene>-as-<reference>) tunes just
+# those: with more EVALUATIONS, a finished tune's walk goes on from its journal (docs/tuning.md#running).
+#   ONLY="$(scripts/tuned_table.sh OUT | awk -F' [|] ' '/missed/ {print $1}' | tr -d '| ')" scripts/tune_all.sh build/release 80 320x180 OUT
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
@@ -26,6 +28,7 @@ for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .json); [ "$name" = default ] && name=yard
   for ref in "${refs[@]}"; do
     run="$name-as-$(basename "$ref" .json)"
+    if [ -n "${ONLY:-}" ] && ! grep -qxF "$run" <<<"$(tr ' ' '\n' <<<"$ONLY")"; then continue; fi
     start=$(date +%s)
     if ! EGL_PLATFORM=surfaceless "$build/shadowtune" tune "$scene" --budget-from "$ref" --evaluations "$evaluations" \
          --size "$size" --out "$out/$run" > "$out/$run.log" 2>&1; then
