@@ -178,19 +178,12 @@ double frameFeature(const FrameWork& w, PassKind kind, Feature f) {
     return 0.0;
 }
 
-// The frame's modelled time of `kind`, summed over its passes.
+// The frame's modelled time of `kind`, summed over its passes: the model is linear in the
+// features, and a pass that did no work has none (not even the intercept).
 double kindModelMs(const CostProfile& p, const FrameWork& w, PassKind kind) {
-    switch (kind) {
-        case PassKind::Cascade: {
-            double sum = 0.0;
-            for (const PassWork& c : w.cascades) sum += modelPass(p.pass(kind), c);
-            return sum;
-        }
-        case PassKind::Main: return modelPass(p.pass(kind), w.main);
-        case PassKind::Filter: return modelPass(p.pass(kind), w.filter);
-        case PassKind::DepthBounds: return modelPass(p.pass(kind), w.depthBounds);
-    }
-    return 0.0;
+    double ms = 0.0;
+    for (const Term& t : p.pass(kind).terms) ms += t.msPerUnit * frameFeature(w, kind, t.feature);
+    return ms;
 }
 }  // namespace
 

@@ -28,7 +28,7 @@ for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .json); [ "$name" = default ] && name=yard
   for ref in "${refs[@]}"; do
     run="$name-as-$(basename "$ref" .json)"
-    if [ -n "${ONLY:-}" ] && ! grep -qxF "$run" <<<"$(tr ' ' '\n' <<<"$ONLY")"; then continue; fi
+    if [ -n "${ONLY:-}" ] && [[ " $(echo $ONLY) " != *" $run "* ]]; then continue; fi
     start=$(date +%s)
     if ! EGL_PLATFORM=surfaceless "$build/shadowtune" tune "$scene" --budget-from "$ref" --evaluations "$evaluations" \
          --size "$size" --out "$out/$run" > "$out/$run.log" 2>&1; then

@@ -71,34 +71,33 @@ void claimFolder(const fs::path& dir, const Json& identity) {
     writeTextAtomic(file, identity.dump(2) + "\n");
 }
 
-// The wall-clock seconds earlier runs of the tune in `dir` spent (progress.json's
-// "secondsAllRuns"; 0 without one): a resumed tune's time is theirs plus its own.
-double earlierSeconds(const fs::path& dir) {
-    std::ifstream in(dir / "progress.json");
-    if (!in) return 0.0;
-    try {
-        const Json j = Json::parse(in);
-        const auto it = j.find("secondsAllRuns");
-        return it != j.end() && it->is_number() && it->get<double>() >= 0.0 ? it->get<double>() : 0.0;
-    } catch (const nlohmann::json::exception&) {
-        return 0.0;  // a progress file is rewritten whole; an unreadable one only loses the old time
-    }
-}
+// What earlier runs of the tune in `dir` left in progress.json (nothing for a new folder; a
+// progress file is rewritten whole, so an unreadable one only loses these):
+// - seconds: their wall-clock ("secondsAllRuns"), so a resumed tune's time is theirs plus its own;
+// - screeningLimit: the first run's ("screeningLimit", or kScreensPerEvaluation times the "limit"
+//   of a folder written before it was kept; 0 for none). A resumed run keeps it, so its walk is
+//   the first run's continued (SearchOptions::screenings).
+struct EarlierRuns {
+    double seconds = 0.0;
+    int screeningLimit = 0;
+};
 
-// The screening limit of the first run of the tune in `dir` (progress.json's "screeningLimit",
-// or kScreensPerEvaluation times the "limit" of a folder written before it was kept); 0 for a new
-// folder. A resumed run keeps it, so its walk is the first run's continued (SearchOptions::screenings).
-int earlierScreeningLimit(const fs::path& dir) {
+EarlierRuns earlierRuns(const fs::path& dir) {
+    EarlierRuns out;
     std::ifstream in(dir / "progress.json");
-    if (!in) return 0;
+    if (!in) return out;
     try {
         const Json j = Json::parse(in);
+        if (const auto it = j.find("secondsAllRuns"); it != j.end() && it->is_number() && it->get<double>() >= 0.0)
+            out.seconds = it->get<double>();
         for (const auto& [key, scale] : {std::pair<const char*, int>{"screeningLimit", 1}, {"limit", kScreensPerEvaluation}})
-            if (const auto it = j.find(key); it != j.end() && it->is_number_integer() && it->get<int>() > 0)
-                return it->get<int>() * scale;
+            if (const auto it = j.find(key); it != j.end() && it->is_number_integer() && it->get<int>() > 0) {
+                out.screeningLimit = it->get<int>() * scale;
+                break;
+            }
     } catch (const nlohmann::json::exception&) {
     }
-    return 0;  // unreadable: the walk starts with this run's limit, as a new tune's would
+    return out;
 }
 
 // The cheapest settings of the space on the input's scene: if they miss the budget, nothing fits.
@@ -178,9 +177,9 @@ public:
         references();
         claimFolder(opt_.outDir, identity());
         start_ = t0;
-        earlierSeconds_ = earlierSeconds(opt_.outDir);
-        screeningLimit_ = earlierScreeningLimit(opt_.outDir);
-        if (screeningLimit_ == 0) screeningLimit_ = kScreensPerEvaluation * opt_.evaluations;
+        const EarlierRuns earlier = earlierRuns(opt_.outDir);
+        earlierSeconds_ = earlier.seconds;
+        screeningLimit_ = earlier.screeningLimit > 0 ? earlier.screeningLimit : kScreensPerEvaluation * opt_.evaluations;
         journal_.emplace(opt_.outDir, opt_.shard);
         resumed_ = int(journal_->size());
         if (resumed_ > 0) say("resuming: " + std::to_string(resumed_) + " evaluations journaled in " + opt_.outDir.string());
@@ -648,7 +647,7 @@ private:
     int made_ = 0, resumed_ = 0, fromShards_ = 0;
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     double earlierSeconds_ = 0.0;  // of the runs this one resumed
-    int screeningLimit_ = 0;       // the first run's (earlierScreeningLimit)
+    int screeningLimit_ = 0;       // the first run's (earlierRuns)
     double secondsAllRuns() const {
         return earlierSeconds_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }

@@ -228,11 +228,15 @@ int calibrate(const CalibrateOptions& opt, const HeadlessContext& ctx) {
 // --refit KIND: only the calibration points that run that pass are timed, and only its
 // coefficients change; the other kinds keep --profile's (metrics::refitOnOwnTimers).
 int refit(const CalibrateOptions& opt, const HeadlessContext& ctx) {
-    const metrics::PassKind kind = *metrics::passKindFromName(opt.refit);
+    const std::optional<metrics::PassKind> named = metrics::passKindFromName(opt.refit);
+    if (!named || !metrics::fittedOnOwnTimers(*named))
+        throw std::runtime_error("--refit: " + opt.refit + " is not a pass kind fitted on its own timers (depthBounds)");
+    const metrics::PassKind kind = *named;
     const metrics::CostProfile base = loadCostProfileOption(opt.profile);
     warnIfOtherRenderer(base, ctx);
     const fs::path presetDir = opt.presetDir.empty() ? defaultPresetDir() : opt.presetDir;
     std::vector<CalibrationPoint> points = calibrationSet(presetDir, opt.size, opt.sweeps);
+    // Depth bounds, the one kind fitted alone, runs where the settings need sample bounds.
     std::erase_if(points, [](const CalibrationPoint& p) { return !csm::needsSampleBounds(p.settings.cascades); });
     if (points.empty()) throw std::runtime_error("no calibration point runs the " + opt.refit + " pass");
     const TimedPoints timed = timePoints(opt, points);
