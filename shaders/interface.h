@@ -150,7 +150,7 @@
     M(mat4, reduceInvProj)  /* camera clip -> vs */                                               \
     M(mat4, reduceVsToLs)   /* vs -> light view (ls) */                                           \
     A(vec4, reduceSplits, 3) /* split depths 0..count, four per vec4 */                           \
-    M(int, reduceMode)      /* 0: view-depth range; 1: ls bounds per cascade */                   \
+    M(int, reduceMode)      /* 0: depth range; 1: and ls bounds per cascade */                    \
     M(int, reduceCascades)  /* cascades to reduce in mode 1 */                                    \
     M(int, reduceWidth)     /* depth texture size, texels */                                      \
     M(int, reduceHeight)

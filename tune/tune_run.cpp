@@ -137,6 +137,21 @@ Settings planeBias(Settings s) {
     return s;
 }
 
+// A method's maps placed on what the views show (SDSM, Lauritzen, Salvi and Lefohn 2011): light
+// boxes fitted to the visible samples, each pixel reading the finest map that holds it, and the
+// casters toward the light that a sample-tight box would cut drawn by a fixed reach (a tenth of
+// the far plane), not the whole scene column; with the receiver-plane bias, which needs no trade
+// between acne and light leaks. On truck-town this start is what takes ogldev-49's maps from
+// 0.852 % to 0.464 % misclassified at less than its cost; the descent did not get there by single
+// moves, as each alone either loses casters (the sample fit alone: 3.7 %) or costs more.
+Settings seenBy(Settings s) {
+    s.cascades.fit = FitMode::Samples;
+    s.cascades.selection = Selection::Map;
+    s.cascades.zExtension = ZExtension::Distance;
+    s.cascades.zExtensionDistance = float(std::round(double(s.camera.farPlane) * kZExtensionStartShare * 10.0) / 10.0);
+    return planeBias(s);
+}
+
 // Analytic starting points: splits from the depth range the camera actually sees (depth bounds:
 // SDSM), a light box fitted to the visible samples, and each analytic bias.
 std::vector<Settings> starts(const Settings& input) {
@@ -236,7 +251,7 @@ private:
         const Space space = defaultSpace(input_);
         std::vector<Settings> from = starts(input_);
         // A reference's method is within budget by definition; so is it with an analytic bias.
-        for (const auto& [name, r] : refs_) from.insert(from.end(), {r, texelBias(r), planeBias(r)});
+        for (const auto& [name, r] : refs_) from.insert(from.end(), {r, texelBias(r), planeBias(r), seenBy(r)});
         result_ = search(from, space, [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); }, so);
         out.evaluations = made_;
         out.resumed = resumed_;

@@ -89,6 +89,10 @@ inline constexpr double kScreenCostSlack = 0.03;
 bool worthFullEvaluation(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull,
                          const Budget& budget);
 
+// Outside the budget, the first rung's rule: a neighbour is worth a full evaluation when its
+// screen models less time or less map memory than the point's own screen.
+bool cheaperOnScreen(const Evaluation& mine, const Evaluation& fromScreen);
+
 struct SearchResult {
     std::vector<Candidate> evaluated;  // every distinct point, in the order first evaluated
     std::optional<std::size_t> best;   // the best feasible, if any

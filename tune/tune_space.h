@@ -14,6 +14,11 @@ namespace st::tune {
 // Bias factors per cascade are tuned for the first this many cascades (the space's count goes to 6).
 inline constexpr int kMaxTunedCascades = 6;
 
+// cascades.zExtensionDistance's candidates as shares of the camera's far plane; the tuner's
+// sample-fit starts take kZExtensionStartShare.
+inline constexpr double kZExtensionShares[] = {0.01, 0.02, 0.035, 0.05, 0.1, 0.2, 0.4};
+inline constexpr double kZExtensionStartShare = 0.1;
+
 // One knob: a field of the settings table (renderer/settings/field_table.h) and its candidates.
 struct Dimension {
     std::string path;                   // "cascades.lambda", or a list element: "bias.constantScale[1]"
@@ -22,6 +27,9 @@ struct Dimension {
     // others helps, so the many per-cascade moves do not spend the evaluations a descent of
     // the whole preset needs first.
     bool refinement = false;
+    // A range whose far values matter as much as the near ones (the shadow distance: a tenth of
+    // the far plane is four steps from none): every value is a move, the best screened first.
+    bool jumps = false;
 };
 
 struct Space {
@@ -31,7 +39,7 @@ struct Space {
 
 // The default space for tuning `base`: split count, scheme weight, shadow distance (fractions of
 // the base's far plane), depth bounds and sample fit, fit, z-extension, stabilisation, storage,
-// map size, filter kind and its parameters, bias constant, slope, normal offset and
+// reach toward the light with a distance z-extension, map size, filter kind and its parameters, bias constant, slope, normal offset and
 // receiver-plane, blend and fade bands, bias per cascade; as refinements, each cascade's map size
 // (atlas and textures storage) and each split depth (a computed scheme turns manual). Fields that only time-slice work (updateInterval) are
 // left out: the cost model prices a frame with every map redrawn, so they would look free.

@@ -29,7 +29,7 @@ std::vector<float> planSplits(const Settings& s, const std::optional<DepthRange>
     sp.lambda = cs.lambda;
     sp.manual = cs.manualSplits;
     sp.shadowDistance = cs.shadowDistance;
-    if (cs.depthBounds == DepthBounds::Fit && cs.scheme != SplitScheme::Manual) {
+    if (splitsFollowSeenDepth(cs)) {
         computeSplits(sp);  // the settings' own errors first, named as the user wrote them
         const SplitRange r = fittedSplitRange(sp.nearPlane, splitRangeEnd(sp.farPlane, sp.shadowDistance), seen);
         sp.nearPlane = r.begin;
@@ -45,6 +45,10 @@ bool needsSampleBounds(const CascadeSettings& c) {
     return c.depthBounds == DepthBounds::Fit || c.fit == FitMode::Samples;
 }
 
+bool splitsFollowSeenDepth(const CascadeSettings& c) {
+    return c.depthBounds == DepthBounds::Fit && c.scheme != SplitScheme::Manual;
+}
+
 CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBounds, const SampleBounds* samples) {
     const CascadeSettings& cs = s.cascades;
     CascadePlan plan;
@@ -53,7 +57,7 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     plan.csProj = projectionMatrix(plan.camera);
     plan.wsLightDir = lightDirection(s.light.azimuth, s.light.elevation);
     plan.splits = planSplits(s, samples ? samples->depth : std::nullopt, &plan.splitRange);
-    plan.depthFitted = samples && cs.depthBounds == DepthBounds::Fit && cs.scheme != SplitScheme::Manual;
+    plan.depthFitted = samples && splitsFollowSeenDepth(cs);
 
     FitParams fp;
     fp.fit = cs.fit;

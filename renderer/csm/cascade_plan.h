@@ -37,5 +37,8 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
 
 // Whether the frame needs the depth reduction before planning.
 bool needsSampleBounds(const CascadeSettings& c);
+// Whether the split depths follow the seen depth range (depth bounds fit a computed scheme), so
+// the range must be reduced before the cascades' samples can be.
+bool splitsFollowSeenDepth(const CascadeSettings& c);
 
 }  // namespace st::csm

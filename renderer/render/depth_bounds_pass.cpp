@@ -20,7 +20,8 @@ struct DepthBoundsPass::Result {
 
 namespace {
 
-constexpr int kGroupTexels = 16 * 4;  // local_size_x/y of the shader times its TILE
+constexpr int kGroupWidth = 8 * 16;  // local_size_x of the shader times its TILE
+constexpr int kGroupHeight = 16;     // local_size_y (1) times TILE
 
 // Inverse of the shader's orderedKey().
 float fromKey(std::uint32_t key) {
@@ -57,14 +58,29 @@ DepthBoundsPass::Result DepthBoundsPass::run(GLuint depth, const gpu_if::ReduceB
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ST_STORAGE_REDUCE, result_.id());
     glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, depth);
     glUseProgram(program_->id());
-    glDispatchCompute(GLuint((block.reduceWidth + kGroupTexels - 1) / kGroupTexels),
-                      GLuint((block.reduceHeight + kGroupTexels - 1) / kGroupTexels), 1);
+    glDispatchCompute(GLuint((block.reduceWidth + kGroupWidth - 1) / kGroupWidth),
+                      GLuint((block.reduceHeight + kGroupHeight - 1) / kGroupHeight), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(result_.id(), 0, sizeof r, &r);
     glBindTextureUnit(ST_BINDING_REDUCE_DEPTH, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ST_STORAGE_REDUCE, 0);
     return r;
 }
+
+namespace {
+
+// The reduced GL depths [min, max] as view depths: a perspective's view depth follows its GL depth
+// monotonically and does not depend on the pixel, so the two ends are the range.
+std::optional<csm::DepthRange> viewDepthRange(const std::uint32_t keys[4], const glm::mat4& invProj) {
+    if (keys[2] == 0) return std::nullopt;
+    auto viewDepth = [&](float d) {
+        const glm::vec4 vs = invProj * glm::vec4(0.0f, 0.0f, d * 2.0f - 1.0f, 1.0f);
+        return -vs.z / vs.w;
+    };
+    return csm::DepthRange{viewDepth(fromKey(keys[0])), viewDepth(fromKey(keys[1]))};
+}
+
+}  // namespace
 
 std::optional<csm::DepthRange> DepthBoundsPass::depthRange(GLuint depth, int width, int height,
                                                            const glm::mat4& csProj) {
@@ -74,13 +90,11 @@ std::optional<csm::DepthRange> DepthBoundsPass::depthRange(GLuint depth, int wid
     b.reduceWidth = width;
     b.reduceHeight = height;
     const Result r = run(depth, b);
-    if (r.depthKeys[2] == 0) return std::nullopt;
-    return csm::DepthRange{fromKey(r.depthKeys[0]), fromKey(r.depthKeys[1])};
+    return viewDepthRange(r.depthKeys, b.reduceInvProj);
 }
 
-std::vector<std::optional<csm::Aabb>> DepthBoundsPass::cascadeBounds(GLuint depth, int width, int height,
-                                                                     const glm::mat4& csProj, const glm::mat4& vsToLs,
-                                                                     std::span<const float> splits) {
+csm::SampleBounds DepthBoundsPass::cascadeBounds(GLuint depth, int width, int height, const glm::mat4& csProj,
+                                                 const glm::mat4& vsToLs, std::span<const float> splits) {
     const int count = static_cast<int>(splits.size()) - 1;
     if (count < 1 || count > ST_MAX_CASCADES)
         throw std::invalid_argument("depth bounds: " + std::to_string(splits.size()) + " split depths");
@@ -93,7 +107,9 @@ std::vector<std::optional<csm::Aabb>> DepthBoundsPass::cascadeBounds(GLuint dept
     b.reduceWidth = width;
     b.reduceHeight = height;
     const Result r = run(depth, b);
-    std::vector<std::optional<csm::Aabb>> out(static_cast<std::size_t>(count));
+    csm::SampleBounds out;
+    out.depth = viewDepthRange(r.depthKeys, b.reduceInvProj);
+    out.lsCascade.resize(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) {
         if (r.lsSamples[i] == 0) continue;
         csm::Aabb box;
@@ -101,7 +117,7 @@ std::vector<std::optional<csm::Aabb>> DepthBoundsPass::cascadeBounds(GLuint dept
             box.min[k] = fromKey(r.lsMinKeys[3 * i + k]);
             box.max[k] = fromKey(r.lsMaxKeys[3 * i + k]);
         }
-        out[static_cast<std::size_t>(i)] = box;
+        out.lsCascade[static_cast<std::size_t>(i)] = box;
     }
     return out;
 }

@@ -24,10 +24,11 @@ public:
     // of width x height drawn through csProj, GL depth [0, 1]); nullopt when there is none.
     std::optional<csm::DepthRange> depthRange(GLuint depth, int width, int height, const glm::mat4& csProj);
 
-    // Per cascade i (view depths splits[i]..splits[i+1]), the bounds in ls = vsToLs * vs of the
-    // texels it holds; nullopt for a cascade that holds none.
-    std::vector<std::optional<csm::Aabb>> cascadeBounds(GLuint depth, int width, int height, const glm::mat4& csProj,
-                                                        const glm::mat4& vsToLs, std::span<const float> splits);
+    // In one pass, the depth range as depthRange() and, per cascade i (view depths
+    // splits[i]..splits[i+1]), the bounds in ls = vsToLs * vs of the texels it holds (nullopt for
+    // a cascade that holds none). For splits that do not follow the seen range.
+    csm::SampleBounds cascadeBounds(GLuint depth, int width, int height, const glm::mat4& csProj,
+                                    const glm::mat4& vsToLs, std::span<const float> splits);
 
 private:
     struct Result;

@@ -108,11 +108,11 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
         stats.filterMapBytes += stats.screenShadowBytes;
     }
     const glm::mat4 mainViewProj = plan_.csProj * plan_.vsView;
-    const bool keptMain = s.output.view != View::Side && reusesMain(mainViewProj, screen);
+    const bool keptMain = s.output.view != View::Side && reusesMain(mainViewProj, screen, reduce);
     if (s.output.view == View::Side)
         sidePass(s, orbit, target_);
     else if (!keptMain)
-        mainPass(s, mainViewProj, target_, screen);
+        mainPass(s, mainViewProj, target_, screen, reduce);
     if (keptMain) {
         timers_.begin(s.cascades.count);  // nothing drawn: a valid 0 ms for the main pass's timer
         timers_.end(s.cascades.count);
@@ -141,13 +141,15 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     if (!options_.shadeMain && s.output.view != View::Side && !screen && !keptMain) {
         PassWork counted = counters_.read(slots.main());
         counted += ownWork_[std::size_t(slots.main())];
-        keptMain_ = KeptMain{mainViewProj, target_.width(), target_.height(), counted, mainTriangles_, mainDraws_, mainRanges_};
+        keptMain_ = KeptMain{mainViewProj, target_.width(), target_.height(), reduce, counted, mainTriangles_, mainDraws_,
+                             mainRanges_};
     }
     return stats;
 }
 
-bool Renderer::reusesMain(const glm::mat4& viewProj, bool screen) const {
+bool Renderer::reusesMain(const glm::mat4& viewProj, bool screen, bool prepassed) const {
     return !options_.shadeMain && !screen && keptMain_ && keptMain_->viewProj == viewProj &&
+           keptMain_->prepassed == prepassed &&
            keptMain_->width == target_.width() && keptMain_->height == target_.height();
 }
 
@@ -201,15 +203,17 @@ csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
     own.draws = visibleCommands_;
     own.texelsCleared = texels;
     own.bytesRead = 4 * texels;
-    csm::SampleBounds out;
-    out.depth = depthBounds_->depthRange(target_.depthTexture(), target_.width(), target_.height(), proj);
-    if (s.cascades.fit == FitMode::Samples) {
+    const GLuint depth = target_.depthTexture();
+    if (s.cascades.fit != FitMode::Samples) return {depthBounds_->depthRange(depth, target_.width(), target_.height(), proj)};
+    // Splits that follow the seen range need it first (a second reduction); others take it along.
+    std::optional<csm::DepthRange> seen;
+    if (csm::splitsFollowSeenDepth(s.cascades)) {
+        seen = depthBounds_->depthRange(depth, target_.width(), target_.height(), proj);
         own.bytesRead += 4 * texels;
-        const glm::mat4 lsView = csm::lightViewMatrix(csm::lightDirection(s.light.azimuth, s.light.elevation));
-        out.lsCascade = depthBounds_->cascadeBounds(target_.depthTexture(), target_.width(), target_.height(), proj,
-                                                    lsView * csm::inverseViewMatrix(cam), csm::planSplits(s, out.depth));
     }
-    return out;
+    const glm::mat4 lsView = csm::lightViewMatrix(csm::lightDirection(s.light.azimuth, s.light.elevation));
+    return depthBounds_->cascadeBounds(depth, target_.width(), target_.height(), proj, lsView * csm::inverseViewMatrix(cam),
+                                       csm::planSplits(s, seen));
 }
 
 void Renderer::recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const {
@@ -334,14 +338,22 @@ void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const Offsc
     }
 }
 
-void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen) {
+void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen,
+                        bool prepassed) {
     gpu::DebugGroup group("main pass");
     const CounterSlots slots{s.cascades.count};
     timers_.begin(s.cascades.count);
     counters_.begin(slots.main());
-    gpu::applyPassState(gpu::opaqueScenePass(target.framebuffer(), target.width(), target.height()));
+    gpu::PassState state = gpu::opaqueScenePass(target.framebuffer(), target.width(), target.height());
+    if (prepassed) {
+        // Both passes draw the same batches with the same invariant gl_Position, so each pixel's
+        // nearest fragment passes LEQUAL and every fragment behind it fails before shading.
+        state.depthFunc = GL_LEQUAL;
+        state.depthWrite = false;
+    }
+    gpu::applyPassState(state);
     glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClear(prepassed ? GL_COLOR_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // Only the main camera's frame may go unshaded: the side view is an image to look at.
     const bool shade = options_.shadeMain || &target != &target_ || s.output.view == View::Side;
     glUseProgram(shade ? mainProgram_->id() : coverageProgram_->id());

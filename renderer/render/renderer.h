@@ -101,8 +101,11 @@ private:
     void auditZExtension(const Settings& s, FrameStats& stats) const;
     // Draws the shaded scene seen through viewProj into `target`; shadows always follow the
     // main camera's cascades. `screen`: read the factor from screen_'s mask, built for this
-    // viewProj and target size.
-    void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen = false);
+    // viewProj and target size. `prepassed`: the target's depth already holds this view's depth
+    // (the depth-bounds prepass), so the pass tests against it, writes none and shades each
+    // pixel once: a forward renderer's z-prepass.
+    void mainPass(const Settings& s, const glm::mat4& viewProj, const OffscreenTarget& target, bool screen = false,
+                  bool prepassed = false);
     // filter.screenSpace: the mask of the main camera seen through viewProj at width x height.
     void buildScreenShadow(const Settings& s, const glm::mat4& viewProj, int width, int height);
     // The scene's triangles inside viewProj's frustum, with per-material face culling.
@@ -145,12 +148,13 @@ private:
     struct KeptMain {
         glm::mat4 viewProj{1.0f};
         int width = 0, height = 0;
+        bool prepassed = false;  // drawn over the depth prepass: it shaded fewer fragments
         PassWork work;
         std::size_t triangles = 0;
         int draws = 0, ranges = 0;
     };
     std::optional<KeptMain> keptMain_;
-    bool reusesMain(const glm::mat4& viewProj, bool screen) const;
+    bool reusesMain(const glm::mat4& viewProj, bool screen, bool prepassed) const;
 };
 
 }  // namespace st

@@ -173,15 +173,16 @@ TEST_F(PassWorkGLTest, MomentMapsAreTwoFullscreenPassesPerLayer) {
     EXPECT_EQ(f.work.main.bytesRead, f.work.main.fragments * 4u * 8u);
 }
 
-TEST_F(PassWorkGLTest, TheDepthReductionRunsOneInvocationPerFourByFourTexels) {
+TEST_F(PassWorkGLTest, TheDepthReductionRunsOneInvocationPerSixteenBySixteenTexels) {
     Scene scene = makeBuiltinScene("box-over-plane");
     Renderer r(scene);
     Settings s = groundFillingTheView();
     s.cascades.depthBounds = DepthBounds::Fit;
     const FrameStats f = redrawn(r, s);
     const PassWork& w = f.work.depthBounds;
-    // ceil(160 / 64) x ceil(90 / 64) groups of 16 x 16 (shaders/depth_bounds_comp.glsl).
-    EXPECT_EQ(w.computeInvocations, 3u * 2u * 256u);
+    // ceil(160 / 128) x ceil(90 / 16) groups of 8 x 1, each invocation 16 x 16 texels
+    // (shaders/depth_bounds_comp.glsl).
+    EXPECT_EQ(w.computeInvocations, 2u * 6u * 8u);
     expectCovers(w.fragments, u64(160 * 90), "depth prepass");  // one layer of ground
     EXPECT_EQ(w.primitives, 2u);
     EXPECT_EQ(w.texelsCleared, u64(160 * 90));
@@ -242,6 +243,56 @@ TEST_F(PassWorkGLTest, SamplesPassedShowOverdrawThatFragmentsDoNot) {
     EXPECT_GE(backToFront.samplesPassed, coveredBack + coveredBack / 2);
     EXPECT_LE(backToFront.samplesPassed, backToFront.fragments);
     EXPECT_GT(backToFront.samplesPassed, frontToBack.samplesPassed);
+}
+
+// A sample fit reduces the depth buffer twice when its splits follow the seen range (the range
+// first, then each cascade's samples) and once when they do not: the range comes along.
+TEST_F(PassWorkGLTest, ASampleFitWithSplitsThatDoNotFollowTheRangeReducesOnce) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    Settings s = groundFillingTheView();
+    s.cascades.fit = FitMode::Samples;
+    s.cascades.depthBounds = DepthBounds::Fit;
+    const FrameStats twice = redrawn(r, s);
+    s.cascades.depthBounds = DepthBounds::Off;
+    const FrameStats once = redrawn(r, s);
+    EXPECT_EQ(twice.work.depthBounds.computeInvocations, 2u * once.work.depthBounds.computeInvocations);
+    EXPECT_EQ(once.work.depthBounds.computeInvocations, 2u * 6u * 8u);
+    EXPECT_EQ(once.work.depthBounds.bytesRead, u64(4 * 160 * 90));  // the prepass's D32F depth, read once
+    EXPECT_EQ(twice.work.depthBounds.bytesRead, 2u * once.work.depthBounds.bytesRead);
+    // Both saw the same depths: the range reported does not depend on which pass reduced it.
+    ASSERT_TRUE(once.depthBounds.seen && twice.depthBounds.seen);
+    EXPECT_FLOAT_EQ(once.depthBounds.vsMin, twice.depthBounds.vsMin);
+    EXPECT_FLOAT_EQ(once.depthBounds.vsMax, twice.depthBounds.vsMax);
+}
+
+// With depth bounds the main pass draws over the prepass's depth (LEQUAL, no depth writes), so it
+// shades each covered pixel once even back to front, where without them every sheet passes.
+TEST_F(PassWorkGLTest, OverTheDepthPrepassTheMainPassShadesEachPixelOnce) {
+    constexpr int sheets = 4;
+    Scene scene = sheetStack(sheets);
+    Renderer r(scene);
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.nearPlane = 0.3f;
+    s.camera.farPlane = 60.0f;
+    const float back = -4.0f * (sheets - 1);
+    s.camera.position = {0.0f, 0.0f, back - 6.0f};  // back to front: the worst order
+    s.camera.target = {0.0f, 0.0f, back + 1.0f};
+    s.cascades.count = 1;  // manual: the seen range moves no split, so both frames draw the same map
+    s.cascades.scheme = SplitScheme::Manual;
+    const PassWork without = r.render(s).work.main;
+    const std::vector<std::uint8_t> imageWithout = r.readRgba8();
+    s.cascades.depthBounds = DepthBounds::Fit;
+    const FrameStats with = r.render(s);
+    const std::uint64_t covered = coveredPixels(r.readRgba8());
+    ASSERT_GT(covered, 0u);
+    EXPECT_GE(without.samplesPassed, covered + covered / 2);
+    EXPECT_EQ(with.work.main.samplesPassed, covered);
+    EXPECT_EQ(with.work.main.fragments, without.fragments);  // rasterised as before, shaded once
+    // The same picture: every nearest fragment passed LEQUAL against its own prepass depth.
+    EXPECT_EQ(r.readRgba8(), imageWithout);
 }
 
 // RenderOptions::shadeMain off (what a tune's evaluation draws): the main pass draws coverage

@@ -197,6 +197,64 @@ TEST(TuneSearchTest, AScreenSkipsFullEvaluationsOfWorseNeighbours) {
     EXPECT_LT(halving.evaluationsToBest, plain.evaluationsToBest) << "the screened-out neighbours were not evaluated";
 }
 
+// From a start over the budget, cost decides: a neighbour is evaluated in full only when its
+// screen models less, so moves that change no cost (the bias) are screened out, not evaluated.
+TEST(TuneSearchTest, OverTheBudgetOnlyNeighboursThatScreenCheaperAreEvaluated) {
+    const Space space = spaceOf({"bias.slope", "bias.constant", "cascades.mapSize"});
+    Settings start;
+    start.cascades.count = 4;
+    start.cascades.mapSize = 4096;  // 134 "ms" of bowl()
+    SearchOptions opt;
+    opt.budget.ms = 10.0;
+    opt.evaluations = 6;
+    std::vector<Settings> full;
+    const Evaluator count = [&](const Settings& s) {
+        full.push_back(s);
+        return bowl(s);
+    };
+    opt.screen = bowl;
+    const SearchResult r = search({start}, space, count, opt);
+    ASSERT_TRUE(r.best) << "6 evaluations reach the budget when none is spent on the bias";
+    EXPECT_LE(r.evaluated[*r.best].eval.costMs, 10.0);
+    EXPECT_GT(r.screenedOut, 0);
+    // Every full evaluation after the start, until one fits, is a map-size move down.
+    for (std::size_t i = 1; i < full.size() && !(bowl(full[i - 1]).costMs <= 10.0); ++i)
+        EXPECT_LT(full[i].cascades.mapSize, full[i - 1].cascades.mapSize) << i;
+    // Without the screen's cost test (no screen) the bias moves come first and spend the limit.
+    opt.screen = nullptr;
+    EXPECT_FALSE(search({start}, space, bowl, opt).best);
+}
+
+// A dimension with jumps (the shadow distance) tries every value, the best screened first: the
+// best distance, four steps along its list from none, is the first one evaluated in full.
+TEST(TuneSearchTest, AJumpDimensionEvaluatesItsBestScreenedValueFirst) {
+    Settings start;
+    start.camera.farPlane = 1000.0f;
+    Space space;
+    space.dims.push_back(*defaultSpace(start).find("cascades.shadowDistance"));  // 0, 800, 650, ... 150, 100 m
+    ASSERT_TRUE(space.dims.front().jumps);
+    auto error = [](const Settings& s) {
+        Evaluation e;
+        e.error = std::abs((s.cascades.shadowDistance > 0.0f ? s.cascades.shadowDistance : 1000.0f) - 100.0f);
+        e.costMs = 1.0;
+        return e;
+    };
+    SearchOptions opt;
+    opt.budget.ms = 2.0;
+    opt.evaluations = 2;
+    opt.screen = error;
+    const SearchResult r = search({start}, space, error, opt);
+    ASSERT_TRUE(r.best);
+    EXPECT_EQ(r.evaluated[*r.best].settings.cascades.shadowDistance, 100.0f);
+    EXPECT_EQ(r.evaluated[*r.best].move, "cascades.shadowDistance 0.0 -> 100.0");
+    // Without jumps the same two evaluations go one step: 0 -> 800.
+    Space plain = space;
+    plain.dims.front().jumps = false;
+    const SearchResult step = search({start}, plain, error, opt);
+    ASSERT_TRUE(step.best);
+    EXPECT_EQ(step.evaluated[*step.best].settings.cascades.shadowDistance, 800.0f);
+}
+
 // A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
 // the shorter one continued (the same points in the same order, then more), so it never ends
 // worse. With the limit scaled to the new count the walk screens longer and goes elsewhere.
