@@ -209,6 +209,23 @@ TEST_F(PassWorkGLTest, TheScreenSpacePathFiltersInItsMaskAndTheMainPassReadsOneF
     EXPECT_EQ(f.work.main.bytesRead, f.work.main.fragments * 4u);  // one R32F factor
 }
 
+namespace {
+
+// sheetStack(sheets) seen along its axis, from the front sheet's side or from the back one's.
+Settings lookingAlongTheStack(int sheets, bool fromFront) {
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.nearPlane = 0.3f;
+    s.camera.farPlane = 60.0f;
+    const float back = -4.0f * float(sheets - 1);
+    s.camera.position = {0.0f, 0.0f, fromFront ? 6.0f : back - 6.0f};
+    s.camera.target = {0.0f, 0.0f, fromFront ? -1.0f : back + 1.0f};
+    return s;
+}
+
+}  // namespace
+
 // llvmpipe counts fragment-shader invocations before the depth test, so they are the same in
 // any draw order; the samples that passed it are not. The naive path draws the stack in scene
 // order: front to back from its +z end, where only the nearest sheet's pixels pass, and back to
@@ -218,17 +235,10 @@ TEST_F(PassWorkGLTest, SamplesPassedShowOverdrawThatFragmentsDoNot) {
     Scene scene = sheetStack(sheets);
     Renderer r(scene);
     r.setOptions(RenderOptions{.naive = true});
-    Settings s;
-    s.output = {160, 120, View::Shaded};
-    s.cascades.mapSize = 256;
-    s.camera.nearPlane = 0.3f;
-    s.camera.farPlane = 60.0f;
-    const float back = -4.0f * (sheets - 1);
     PassWork frontToBack, backToFront;
     std::uint64_t coveredFront = 0, coveredBack = 0;
     for (bool fromFront : {true, false}) {
-        s.camera.position = {0.0f, 0.0f, fromFront ? 6.0f : back - 6.0f};
-        s.camera.target = {0.0f, 0.0f, fromFront ? -1.0f : back + 1.0f};
+        const Settings s = lookingAlongTheStack(sheets, fromFront);
         const PassWork w = r.render(s).work.main;
         (fromFront ? frontToBack : backToFront) = w;
         (fromFront ? coveredFront : coveredBack) = coveredPixels(r.readRgba8());
@@ -272,14 +282,7 @@ TEST_F(PassWorkGLTest, OverTheDepthPrepassTheMainPassShadesEachPixelOnce) {
     constexpr int sheets = 4;
     Scene scene = sheetStack(sheets);
     Renderer r(scene);
-    Settings s;
-    s.output = {160, 120, View::Shaded};
-    s.cascades.mapSize = 256;
-    s.camera.nearPlane = 0.3f;
-    s.camera.farPlane = 60.0f;
-    const float back = -4.0f * (sheets - 1);
-    s.camera.position = {0.0f, 0.0f, back - 6.0f};  // back to front: the worst order
-    s.camera.target = {0.0f, 0.0f, back + 1.0f};
+    Settings s = lookingAlongTheStack(sheets, false);  // back to front: the worst order
     s.cascades.count = 1;  // manual: the seen range moves no split, so both frames draw the same map
     s.cascades.scheme = SplitScheme::Manual;
     const PassWork without = r.render(s).work.main;
