@@ -148,7 +148,7 @@ Settings seenBy(Settings s) {
     s.cascades.fit = FitMode::Samples;
     s.cascades.selection = Selection::Map;
     s.cascades.zExtension = ZExtension::Distance;
-    s.cascades.zExtensionDistance = float(std::round(double(s.camera.farPlane) * kZExtensionStartShare * 10.0) / 10.0);
+    s.cascades.zExtensionDistance = float(farPlaneShare(s, kZExtensionStartShare));
     return planeBias(s);
 }
 

@@ -90,8 +90,7 @@ public:
     // Whether `s` is worth a full evaluation from the point `cur`: without a screen always; from a
     // point over the budget when it screens cheaper (cost decides there: a bias move, which
     // changes no cost, spent 11 of 16 evaluations of the README's tune of the yard at 10 ms);
-    // else when it screens better than `cur`.
-    // nullopt once the screenings are spent (then everything goes to full evaluation).
+    // else when it screens better than `cur`. Always once the screenings are spent.
     bool worthEvaluating(const Settings& s, std::size_t cur) {
         if (!opt_.screen) return true;
         if (!at(cur).feasible && at(cur).excess <= 0.0) return true;  // a constraint, not the budget: error decides

@@ -46,6 +46,8 @@ std::vector<Json> list(std::initializer_list<T> values) {
 
 }  // namespace
 
+double farPlaneShare(const Settings& s, double share) { return std::round(double(s.camera.farPlane) * share * 10.0) / 10.0; }
+
 const Dimension* Space::find(const std::string& path) const {
     for (const Dimension& d : dims)
         if (d.path == path) return &d;
@@ -61,7 +63,7 @@ Space defaultSpace(const Settings& base) {
     // Shadow distance as shares of the far plane: a scene's useful range is not known in metres.
     std::vector<Json> distances{0.0};
     for (double share : {0.8, 0.65, 0.5, 0.4, 0.3, 0.22, 0.15, 0.1})
-        distances.emplace_back(std::round(double(base.camera.farPlane) * share * 10.0) / 10.0);
+        distances.emplace_back(farPlaneShare(base, share));
     add("cascades.shadowDistance", distances);
     s.dims.back().jumps = true;
     add("cascades.depthBounds", enumValues("cascades.depthBounds"));
@@ -71,7 +73,7 @@ Space defaultSpace(const Settings& base) {
     // taller than the scene's receivers need little of it, and scene-bounds draws the whole column
     // (truck-town, sample fit: 2.75 M fragments in the nearest map against 2.03 M at 50-300 m).
     std::vector<Json> reaches;
-    for (double share : kZExtensionShares) reaches.emplace_back(std::round(double(base.camera.farPlane) * share * 10.0) / 10.0);
+    for (double share : kZExtensionShares) reaches.emplace_back(farPlaneShare(base, share));
     add("cascades.zExtensionDistance", reaches);
     add("cascades.stabilize", list({false, true}));
     // Map selection reads the finest map that holds the pixel: a cascade's box reaches past its
@@ -84,7 +86,7 @@ Space defaultSpace(const Settings& base) {
     std::vector<Json> splitDepths;
     for (double share : {0.002, 0.004, 0.006, 0.01, 0.015, 0.02, 0.03, 0.04, 0.06, 0.08, 0.1, 0.13, 0.17, 0.22, 0.3,
                          0.4, 0.5, 0.65, 0.8})
-        splitDepths.emplace_back(std::round(double(base.camera.farPlane) * share * 10.0) / 10.0);
+        splitDepths.emplace_back(farPlaneShare(base, share));
     for (int i = 0; i < kMaxTunedCascades; ++i) {
         s.dims.push_back({"cascades.mapSizes[" + std::to_string(i) + "]", list({256, 512, 1024, 2048, 4096}), true});
         if (i + 1 < kMaxTunedCascades)

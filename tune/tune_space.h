@@ -19,6 +19,10 @@ inline constexpr int kMaxTunedCascades = 6;
 inline constexpr double kZExtensionShares[] = {0.01, 0.02, 0.035, 0.05, 0.1, 0.2, 0.4};
 inline constexpr double kZExtensionStartShare = 0.1;
 
+// A share of `s`'s far plane in metres, to a tenth of a metre: how the space states depths and
+// distances, since a scene's useful range is not known in metres.
+double farPlaneShare(const Settings& s, double share);
+
 // One knob: a field of the settings table (renderer/settings/field_table.h) and its candidates.
 struct Dimension {
     std::string path;                   // "cascades.lambda", or a list element: "bias.constantScale[1]"
