@@ -152,6 +152,18 @@ Settings seenBy(Settings s) {
     return planeBias(s);
 }
 
+// The same with the splits' range cut to that tenth of the far plane where it reaches further:
+// most of what a view shows is near (truck-town's preset camera: half its covered pixels within
+// 22 m, 95 % within 98 m, 98 % within 304 m of its 1500 m far plane), so its maps' texels go
+// there. On truck-town at ogldev-49's budget the tune from it ends at 0.403 % misclassified
+// against 0.438 % without it (soft filtered 0.005284 against 0.005485).
+Settings seenNear(Settings s) {
+    s = seenBy(s);
+    const float reach = float(farPlaneShare(s, kZExtensionStartShare));
+    if (s.cascades.shadowDistance <= 0.0f || s.cascades.shadowDistance > reach) s.cascades.shadowDistance = reach;
+    return s;
+}
+
 // Analytic starting points: splits from the depth range the camera actually sees (depth bounds:
 // SDSM), a light box fitted to the visible samples, and each analytic bias.
 std::vector<Settings> starts(const Settings& input) {
@@ -251,7 +263,7 @@ private:
         const Space space = defaultSpace(input_);
         std::vector<Settings> from = starts(input_);
         // A reference's method is within budget by definition; so is it with an analytic bias.
-        for (const auto& [name, r] : refs_) from.insert(from.end(), {r, texelBias(r), planeBias(r), seenBy(r)});
+        for (const auto& [name, r] : refs_) from.insert(from.end(), {r, texelBias(r), planeBias(r), seenBy(r), seenNear(r)});
         result_ = search(from, space, [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); }, so);
         out.evaluations = made_;
         out.resumed = resumed_;
