@@ -15,7 +15,7 @@ namespace st::tune {
 inline constexpr int kMaxTunedCascades = 6;
 
 // cascades.zExtensionDistance's candidates as shares of the camera's far plane; the tuner's
-// sample-fit starts take kZExtensionStartShare.
+// sample-fit starts take kZExtensionStartShare as their reach (and seenNear as its shadow distance).
 inline constexpr double kZExtensionShares[] = {0.01, 0.02, 0.035, 0.05, 0.1, 0.2, 0.4};
 inline constexpr double kZExtensionStartShare = 0.1;
 

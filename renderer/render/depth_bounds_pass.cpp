@@ -80,15 +80,21 @@ std::optional<csm::DepthRange> viewDepthRange(const std::uint32_t keys[4], const
     return csm::DepthRange{viewDepth(fromKey(keys[0])), viewDepth(fromKey(keys[1]))};
 }
 
-}  // namespace
-
-std::optional<csm::DepthRange> DepthBoundsPass::depthRange(GLuint depth, int width, int height,
-                                                           const glm::mat4& csProj) {
+// Mode 0 (the depth range) of a width x height depth buffer drawn through csProj.
+gpu_if::ReduceBlock reduceBlock(const glm::mat4& csProj, int width, int height) {
     gpu_if::ReduceBlock b;
     b.reduceInvProj = glm::inverse(csProj);
     b.reduceMode = 0;
     b.reduceWidth = width;
     b.reduceHeight = height;
+    return b;
+}
+
+}  // namespace
+
+std::optional<csm::DepthRange> DepthBoundsPass::depthRange(GLuint depth, int width, int height,
+                                                           const glm::mat4& csProj) {
+    const gpu_if::ReduceBlock b = reduceBlock(csProj, width, height);
     const Result r = run(depth, b);
     return viewDepthRange(r.depthKeys, b.reduceInvProj);
 }
@@ -98,14 +104,11 @@ csm::SampleBounds DepthBoundsPass::cascadeBounds(GLuint depth, int width, int he
     const int count = static_cast<int>(splits.size()) - 1;
     if (count < 1 || count > ST_MAX_CASCADES)
         throw std::invalid_argument("depth bounds: " + std::to_string(splits.size()) + " split depths");
-    gpu_if::ReduceBlock b;
-    b.reduceInvProj = glm::inverse(csProj);
+    gpu_if::ReduceBlock b = reduceBlock(csProj, width, height);
     b.reduceVsToLs = vsToLs;
     for (std::size_t i = 0; i < splits.size(); ++i) b.reduceSplits[i / 4][int(i % 4)] = splits[i];
     b.reduceMode = 1;
     b.reduceCascades = count;
-    b.reduceWidth = width;
-    b.reduceHeight = height;
     const Result r = run(depth, b);
     csm::SampleBounds out;
     out.depth = viewDepthRange(r.depthKeys, b.reduceInvProj);
