@@ -252,6 +252,7 @@ private:
         SearchOptions so;
         so.budget = budget_;
         so.evaluations = opt_.evaluations;
+        so.polish = opt_.evaluations / kPolishShare;
         so.screenings = screeningLimit_;
         so.seed = opt_.seed;
         so.stopRequested = [this] {

@@ -33,7 +33,8 @@ struct TuneOptions {
     int views = 4;                                   // the preset's camera and views around it
     int holdOutEvery = 4;                            // every k-th view after the first is held out
     std::uint64_t seed = 1;
-    int evaluations = 60;
+    // A quarter of them polish the best point's bias at the end (kPolishShare, SearchOptions::polish).
+    int evaluations = 80;
     const metrics::CostProfile* profile = nullptr;
     std::function<bool()> stopRequested;
     long stopAfter = -1;  // make at most this many new evaluations, then stop as Ctrl-C would

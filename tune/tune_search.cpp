@@ -56,6 +56,7 @@ public:
     Walker(const Space& space, const Evaluator& evaluate, const SearchOptions& opt)
         : space_(space), evaluate_(evaluate), opt_(opt), rng_(opt.seed) {}
 
+
     // The index of `s` among the evaluated points, evaluating it if new; nullopt once the
     // evaluations are spent or a stop was requested.
     std::optional<std::size_t> visit(const Settings& s, const std::string& move) {
@@ -66,8 +67,9 @@ public:
             c.eval.valid = false;
             c.eval.problem = problems.front();
         } else {
-            if (out_.evaluations >= opt_.evaluations || (opt_.stopRequested && opt_.stopRequested())) {
-                out_.stopped = out_.evaluations < opt_.evaluations;
+            if (out_.evaluations >= cap_) return std::nullopt;
+            if (opt_.stopRequested && opt_.stopRequested()) {
+                out_.stopped = true;
                 return std::nullopt;
             }
             report(move);
@@ -117,26 +119,51 @@ public:
     }
 
     SearchResult run(const std::vector<Settings>& starts) {
-        std::optional<std::size_t> cur;
+        const int polish = std::clamp(opt_.polish, 0, opt_.evaluations);
+        cap_ = opt_.evaluations;  // every start is measured, then the walk leaves the polish its share
+        screenCap_ = std::max(0, totalScreenings() - kScreensPerEvaluation * polish);
+        std::optional<std::size_t> cur = walk(starts, std::nullopt, opt_.evaluations - polish);
+        if (out_.stopped || polish == 0) return finish();
+        cap_ = opt_.evaluations;
+        screenCap_ = totalScreenings() + (kScreensPerPolish - kScreensPerEvaluation) * polish;
+        if (!out_.best) {  // nothing to polish: the walk goes on from the point nearest the budget
+            if (!cur)
+                for (std::size_t i = 0; i < out_.evaluated.size(); ++i)
+                    if (!cur || better(at(i), at(*cur))) cur = i;
+            if (cur) walk({}, cur, cap_);
+            return finish();
+        }
+        const int before = out_.evaluations;
+        polishFrom(*out_.best);
+        out_.polished = out_.evaluations - before;
+        return finish();
+    }
+
+private:
+    // The starts, then descent rounds, paired and coupled moves and restarts from `cur`, until
+    // `cap` evaluations are made (or more, when the starts took them), a stop is requested or 20
+    // restarts find nothing new. Returns the point it was at (nothing once it ran out).
+    std::optional<std::size_t> walk(const std::vector<Settings>& starts, std::optional<std::size_t> cur, int cap) {
         for (const Settings& s : starts) {
             const auto i = visit(s, cur ? "analytic start" : "start");
-            if (!i) return finish();
+            if (!i) return std::nullopt;
             if (!cur || better(at(*i), at(*cur))) cur = i;
         }
+        cap_ = std::max(cap, out_.evaluations);
         int idleRestarts = 0;
         while (cur && idleRestarts < 20) {
             const int before = fresh_;
             std::optional<std::size_t> next = descend(*cur, false);
-            if (!next) return finish();
+            if (!next) return std::nullopt;
             if (*next == *cur) next = descend(*cur, true);
-            if (!next) return finish();
+            if (!next) return std::nullopt;
             if (*next == *cur) next = pairMove(*cur);
-            if (!next) return finish();
+            if (!next) return std::nullopt;
             if (*next == *cur) next = coupledMove(*cur);
-            if (!next) return finish();
+            if (!next) return std::nullopt;
             if (*next == *cur) {
                 next = restart();
-                if (!next) return finish();
+                if (!next) return std::nullopt;
                 // A restart outside the budget would spend a descent walking back (every step a full
                 // evaluation: cost, not error, decides there); try another from the best instead.
                 if (!at(*next).feasible && out_.best) next = out_.best;
@@ -144,12 +171,67 @@ public:
             cur = next;
             idleRestarts = fresh_ == before ? idleRestarts + 1 : 0;
         }
-        return finish();
+        return cur;
     }
 
-private:
+    // From the best point, its polish dimensions' near moves (one and two steps), best screened
+    // first, each evaluated in full: these moves change the error by a few tenths of a percent,
+    // less than a screen (one view at half size) resolves, so it ranks them but does not reject
+    // them. The first better point is taken and its moves tried next, until none is better or the
+    // evaluations are spent.
+    void polishFrom(std::size_t cur) {
+        for (;;) {
+            std::vector<std::size_t> order;
+            for (std::size_t i = 0; i < space_.dims.size(); ++i)
+                if (space_.dims[i].polish) order.push_back(i);
+            std::shuffle(order.begin(), order.end(), rng_);
+            std::vector<std::pair<std::string, Settings>> tries;
+            for (std::size_t di : order) {
+                const Dimension& d = space_.dims[di];
+                for (auto& [j, s] : moves(at(cur).settings, d))
+                    if (!seen(s) && validate(s).empty()) tries.emplace_back(moveText(at(cur).settings, d, j), std::move(s));
+            }
+            if (opt_.plan) {
+                std::vector<Settings> next;
+                for (const auto& t : tries) next.push_back(t.second);
+                opt_.plan(at(cur).settings, next);
+            }
+            std::optional<std::size_t> next = cur;
+            for (auto& [move, s] : screenedWithinBudget(std::move(tries), cur)) {
+                next = visit(s, move);
+                if (!next) return;
+                if (better(at(*next), at(cur))) break;
+            }
+            if (*next == cur || !better(at(*next), at(cur))) return;
+            cur = *next;
+        }
+    }
+
+    // `tries` from the point `cur` within the budget, best screened first, without those whose
+    // screen predicts a cost over the budget (worthFullEvaluation's cost tests); as they are once
+    // the screenings are spent.
+    std::vector<std::pair<std::string, Settings>> screenedWithinBudget(std::vector<std::pair<std::string, Settings>> tries,
+                                                                        std::size_t cur) {
+        const std::optional<Evaluation> theirs = opt_.screen ? screened(at(cur).settings) : std::nullopt;
+        if (!theirs || out_.screenings + int(tries.size()) > screeningLimit()) return tries;
+        std::vector<std::pair<double, std::size_t>> ranked;
+        for (std::size_t k = 0; k < tries.size(); ++k) {
+            const std::optional<Evaluation> e = screened(tries[k].second);
+            if (!e || !fitsOnScreen(*e, *theirs, at(cur).eval, opt_.budget)) {
+                ++out_.screenedOut;
+                continue;
+            }
+            ranked.emplace_back(e->error, k);
+        }
+        std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::vector<std::pair<std::string, Settings>> out;
+        for (const auto& [error, k] : ranked) out.push_back(std::move(tries[k]));
+        return out;
+    }
+
     const Candidate& at(std::size_t i) const { return out_.evaluated[i]; }
-    int screeningLimit() const { return opt_.screenings > 0 ? opt_.screenings : kScreensPerEvaluation * opt_.evaluations; }
+    int totalScreenings() const { return opt_.screenings > 0 ? opt_.screenings : kScreensPerEvaluation * opt_.evaluations; }
+    int screeningLimit() const { return screenCap_; }
     bool seen(const Settings& s) const { return seen_.count(toOrderedJson(s).dump()) != 0; }
 
     void report(const std::string& trying) {
@@ -165,17 +247,24 @@ private:
     // neighbour better than the current point is taken. Returns the point reached (== cur when
     // nothing was better).
     std::optional<std::size_t> descend(std::size_t cur, bool refinements) {
+        return descendOver(cur, [&](const Dimension& d) { return d.refinement == refinements; }, false);
+    }
+
+    // descend() over the dimensions `pick` takes; with `allJumps` every one jumps (from a point
+    // within the budget).
+    template <class Pick>
+    std::optional<std::size_t> descendOver(std::size_t cur, const Pick& pick, bool allJumps) {
         std::vector<std::size_t> order;
         for (std::size_t i = 0; i < space_.dims.size(); ++i)
-            if (space_.dims[i].refinement == refinements) order.push_back(i);
+            if (pick(space_.dims[i])) order.push_back(i);
         std::shuffle(order.begin(), order.end(), rng_);
-        if (opt_.plan) opt_.plan(at(cur).settings, neighbours(at(cur).settings, order, at(cur).feasible));
+        if (opt_.plan) opt_.plan(at(cur).settings, neighbours(at(cur).settings, order, at(cur).feasible, allJumps));
         for (std::size_t di : order) {
             const Dimension& d = space_.dims[di];
             const Settings base = at(cur).settings;
             // Jumps only where screens decide which to evaluate: from a point over the budget every
             // move is a full evaluation, and a far value rarely walks back into it.
-            const bool jumps = d.jumps && at(cur).feasible;
+            const bool jumps = (d.jumps || allJumps) && at(cur).feasible;
             for (const auto& [j, s] : jumps ? bestScreenedFirst(moves(base, d, true)) : moves(base, d)) {
                 if (!seen(s) && !worthEvaluating(s, cur)) continue;
                 const auto k = visit(s, moveText(base, d, j));
@@ -190,10 +279,11 @@ private:
     }
 
     // The neighbours descend() tries from `base`, in its order, that are new and valid.
-    std::vector<Settings> neighbours(const Settings& base, const std::vector<std::size_t>& order, bool feasible) const {
+    std::vector<Settings> neighbours(const Settings& base, const std::vector<std::size_t>& order, bool feasible,
+                                     bool allJumps) const {
         std::vector<Settings> out;
         for (std::size_t di : order)
-            for (auto& [j, s] : moves(base, space_.dims[di], space_.dims[di].jumps && feasible))
+            for (auto& [j, s] : moves(base, space_.dims[di], (space_.dims[di].jumps || allJumps) && feasible))
                 if (!seen(s) && validate(s).empty()) out.push_back(std::move(s));
         return out;
     }
@@ -302,6 +392,8 @@ private:
     std::map<std::string, std::size_t> seen_;
     std::map<std::string, std::optional<Evaluation>> screens_;  // settings -> screen (none: invalid)
     SearchResult out_;
+    int cap_ = 0;        // evaluations the current phase may reach (the walk's, then all)
+    int screenCap_ = 0;  // screenings likewise
     int fresh_ = 0;  // evaluations made (restarts that found only known points do not count)
 };
 
@@ -309,7 +401,10 @@ private:
 
 bool worthFullEvaluation(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull,
                          const Budget& budget) {
-    if (!(mine.error < fromScreen.error)) return false;
+    return mine.error < fromScreen.error && fitsOnScreen(mine, fromScreen, fromFull, budget);
+}
+
+bool fitsOnScreen(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull, const Budget& budget) {
     if (budget.bytes && mine.mapBytes > *budget.bytes) return false;
     if (budget.ms && fromScreen.costMs > 0.0) {
         const double predicted = fromFull.costMs * mine.costMs / fromScreen.costMs;

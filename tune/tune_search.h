@@ -66,6 +66,13 @@ struct SearchOptions {
     // its first run's, so a larger `evaluations` continues that walk (its first steps are the
     // same) rather than starting another, which could end worse (docs/tuning.md#running).
     int screenings = 0;
+    // Of `evaluations`, this many are kept for the end (every start is measured first in any
+    // case): from the best point within the budget,
+    // the near moves of each polish dimension (Dimension::polish: shadow distance, split depths,
+    // bias, filter parameters, bands), best screened first, each evaluated in full, until none is
+    // better (docs/tuning.md#polish). With no point within the budget the walk gets them.
+    // kScreensPerPolish screenings per polish evaluation are kept for it.
+    int polish = 0;
     std::uint64_t seed = 1;
     std::function<bool()> stopRequested;  // checked before each evaluation (Ctrl-C)
     std::function<void(const SearchProgress&)> progress;
@@ -76,6 +83,11 @@ struct SearchOptions {
 };
 
 inline constexpr int kScreensPerEvaluation = 6;
+// The share of a tune's evaluations its final polish gets: one in this many (SearchOptions::polish).
+inline constexpr int kPolishShare = 4;
+// Screenings per polish evaluation: each round ranks every near move of a point (about 50 on
+// truck-town), so a polish that moves twice needs twice that.
+inline constexpr int kScreensPerPolish = 12;
 
 // The second rung's rule: a neighbour screened as `mine`, of a point `from` within the budget
 // (evaluated in full as `fromFull`, screened as `fromScreen`), is worth a full evaluation when it
@@ -88,6 +100,8 @@ inline constexpr int kScreensPerEvaluation = 6;
 inline constexpr double kScreenCostSlack = 0.03;
 bool worthFullEvaluation(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull,
                          const Budget& budget);
+// Its cost tests alone: the full cost predicted from the screens within the budget.
+bool fitsOnScreen(const Evaluation& mine, const Evaluation& fromScreen, const Evaluation& fromFull, const Budget& budget);
 
 // Outside the budget, the first rung's rule: a neighbour is worth a full evaluation when its
 // screen models less time or less map memory than the point's own screen.
@@ -100,6 +114,7 @@ struct SearchResult {
     int screenings = 0;                // cheap first-rung scores (SearchOptions::screen)
     int screenedOut = 0;               // of them, candidates not worth a full evaluation
     int evaluationsToBest = 0;         // full evaluations made when the best point was found
+    int polished = 0;                  // evaluations the final polish made (SearchOptions::polish)
     bool stopped = false;              // by stopRequested
 };
 

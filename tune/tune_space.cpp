@@ -62,7 +62,7 @@ Space defaultSpace(const Settings& base) {
     add("cascades.lambda", list({0.3, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 0.98}));
     // Shadow distance as shares of the far plane: a scene's useful range is not known in metres.
     std::vector<Json> distances{0.0};
-    for (double share : {0.8, 0.65, 0.5, 0.4, 0.3, 0.22, 0.15, 0.1})
+    for (double share : {0.8, 0.65, 0.5, 0.4, 0.3, 0.22, 0.15, 0.12, 0.1, 0.08, 0.065})
         distances.emplace_back(farPlaneShare(base, share));
     add("cascades.shadowDistance", distances);
     s.dims.back().jumps = true;
@@ -108,6 +108,13 @@ Space defaultSpace(const Settings& base) {
     for (int i = 0; i < kMaxTunedCascades; ++i) {
         add("bias.constantScale[" + std::to_string(i) + "]", list({0.25, 0.5, 1.0, 1.5, 2.0, 3.0}));
         add("bias.slopeScale[" + std::to_string(i) + "]", list({0.25, 0.5, 1.0, 1.5, 2.0, 3.0}));
+    }
+    // What a tune's end polishes: the depths and the bias, not the structure (filter.kind may
+    // change what the maps hold).
+    for (Dimension& d : s.dims) {
+        const auto starts = [&](const char* prefix) { return d.path.rfind(prefix, 0) == 0; };
+        d.polish = starts("bias.") || (starts("filter.") && d.path != "filter.kind") || starts("cascades.manualSplits") ||
+                   d.path == "cascades.shadowDistance" || d.path == "cascades.blendBand" || d.path == "cascades.fadeBand";
     }
     return s;
 }

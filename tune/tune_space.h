@@ -34,6 +34,10 @@ struct Dimension {
     // A range whose far values matter as much as the near ones (the shadow distance: a tenth of
     // the far plane is four steps from none): every value is a move, the best screened first.
     bool jumps = false;
+    // A fine move of a settled point (shadow distance, split depths, bias, filter parameters,
+    // bands): tried again, each evaluated in full, from the best point at the end
+    // (SearchOptions::polish).
+    bool polish = false;
 };
 
 struct Space {

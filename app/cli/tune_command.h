@@ -21,7 +21,7 @@ struct TuneCommandOptions {
     int views = 4;
     int holdOutEvery = 4;
     std::uint64_t seed = 1;
-    int evaluations = 60;
+    int evaluations = 80;
     long stopAfter = -1;
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile

@@ -255,6 +255,42 @@ TEST(TuneSearchTest, AJumpDimensionEvaluatesItsBestScreenedValueFirst) {
     EXPECT_EQ(step.evaluated[*step.best].settings.cascades.shadowDistance, 800.0f);
 }
 
+// The polish evaluates a settled point's near moves in full, in the screen's order, where the
+// walk trusts the screen: here a screen that judges every move worse than the start. The walk
+// evaluates none of the bias moves; the polish walks the slope to its best, a step at a time.
+TEST(TuneSearchTest, ThePolishEvaluatesNearMovesTheScreenTurnedDown) {
+    Settings start;
+    start.bias.slope = 1.0f;
+    Space space;
+    space.dims.push_back(*defaultSpace(start).find("bias.slope"));  // 0, 0.25, 0.5, 0.75, 1, 1.5, 2, 3
+    ASSERT_TRUE(space.dims.front().polish);
+    auto error = [](const Settings& s) {
+        Evaluation e;
+        e.error = std::abs(s.bias.slope - 0.5);
+        e.costMs = 1.0;
+        return e;
+    };
+    SearchOptions opt;
+    opt.budget.ms = 2.0;
+    opt.evaluations = 4;
+    opt.screen = [&](const Settings& s) {
+        Evaluation e = error(s);
+        e.error = s == start ? 0.0 : 1.0;
+        return e;
+    };
+    opt.polish = 3;
+    const SearchResult r = search({start}, space, error, opt);
+    ASSERT_TRUE(r.best);
+    EXPECT_EQ(r.evaluated[*r.best].settings.bias.slope, 0.5f);
+    EXPECT_EQ(r.evaluated[*r.best].move, "bias.slope 0.75 -> 0.5");
+    EXPECT_EQ(r.polished, 3);
+    // Without the polish the walk's descent evaluates no slope move: the screen turned each down.
+    opt.polish = 0;
+    const SearchResult walk = search({start}, space, error, opt);
+    EXPECT_EQ(walk.polished, 0);
+    for (const Candidate& c : walk.evaluated) EXPECT_EQ(c.move.rfind("bias.slope", 0), std::string::npos) << c.move;
+}
+
 // A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
 // the shorter one continued (the same points in the same order, then more), so it never ends
 // worse. With the limit scaled to the new count the walk screens longer and goes elsewhere.
