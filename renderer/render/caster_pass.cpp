@@ -62,7 +62,7 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
     if (d.redraw) {
         shadowMaps_.beginCascade(i, state);  // its layer or tile: viewport, scissor, cleared
         viewBlock_.upload({fit.viewProj});
-        scene_.drawBatches(batches_, FaceCulling::Keep);
+        scene_.drawDepthBatches(batches_, FaceCulling::Keep, depthPrograms());
         cache_.drawn(i, key, fit);
         work = mapWork(shadowMaps_.tile(i).size, batches_.rangeCount());
         held = CascadeStats{};
@@ -106,7 +106,7 @@ void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassStat
     work = mapWork(shadowMaps_.tile(i).size, std::size_t(cs.casterDraws));
 }
 
-void Renderer::drawVisible(const glm::mat4& viewProj) {
+void Renderer::drawVisible(const glm::mat4& viewProj, const DepthPrograms* depth) {
     mainTriangles_ = 0;
     mainDraws_ = 0;
     mainRanges_ = 0;
@@ -148,7 +148,8 @@ void Renderer::drawVisible(const glm::mat4& viewProj) {
     batches_.clear();
     for (const Visible& v : visible) batches_.add(clusters, v.index);
     scene_.bindClusteredGeometry();
-    scene_.drawBatches(batches_, FaceCulling::PerMaterial);
+    if (depth) scene_.drawDepthBatches(batches_, FaceCulling::PerMaterial, *depth);
+    else scene_.drawBatches(batches_, FaceCulling::PerMaterial);
     mainTriangles_ = batches_.triangleCount();
     mainDraws_ = int(batches_.batches().size());
     visibleCommands_ = batches_.rangeCount();

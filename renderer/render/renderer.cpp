@@ -45,6 +45,7 @@ csm::CascadePlan sampledPlan(const Settings& s, const csm::CascadePlan& plan, co
 
 Renderer::Renderer(const Scene& scene) : scene_(scene) {
     depthProgram_ = sharedShaderProgram("shadow_depth.vert", "shadow_depth.frag", "shadow_depth");
+    depthOpaqueProgram_ = sharedShaderProgram("shadow_depth.vert", "depth_only.frag", "depth only");
     mainProgram_ = sharedShaderProgram("main.vert", "main.frag", "main");
     coverageProgram_ = sharedShaderProgram("main.vert", "main_coverage.frag", "main coverage");
 }
@@ -195,7 +196,8 @@ csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
     glUseProgram(depthProgram_->id());
     viewBlock_.upload({proj * csm::viewMatrix(cam)});
     viewBlock_.bind(ST_BLOCK_VIEW);
-    drawVisible(proj * csm::viewMatrix(cam));  // culled and batched, as the main pass will draw it
+    const DepthPrograms programs = depthPrograms();
+    drawVisible(proj * csm::viewMatrix(cam), &programs);  // culled and batched, as the main pass will draw it
     if (!depthBounds_) depthBounds_ = std::make_unique<DepthBoundsPass>();
     // Cleared and drawn into, then read by each reduction (D32F).
     PassWork& own = ownWork_[std::size_t(CounterSlots{s.cascades.count}.bounds())];

@@ -108,15 +108,18 @@ private:
                   bool prepassed = false);
     // filter.screenSpace: the mask of the main camera seen through viewProj at width x height.
     void buildScreenShadow(const Settings& s, const glm::mat4& viewProj, int width, int height);
-    // The scene's triangles inside viewProj's frustum, with per-material face culling.
-    void drawVisible(const glm::mat4& viewProj);
+    // The scene's triangles inside viewProj's frustum, with per-material face culling; with
+    // `depth`, each batch with its depth-only program (the prepass).
+    void drawVisible(const glm::mat4& viewProj, const DepthPrograms* depth = nullptr);
     void sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target);
     // The counted work of the last render(): pipeline statistics of each slot plus the renderer's
     // own counts (pass_work.h).
     // keptMain: the main pass was not drawn; its work is keptMain_'s.
     void countWork(const Settings& s, bool reduce, bool moments, bool screen, FrameStats& stats, bool keptMain);
     SceneGpu scene_;
-    SharedProgram depthProgram_;
+    SharedProgram depthProgram_;        // alpha-masked materials: alpha-tested
+    SharedProgram depthOpaqueProgram_;  // the others: an empty fragment shader (DepthPrograms)
+    DepthPrograms depthPrograms() const { return {depthOpaqueProgram_->id(), depthProgram_->id()}; }
     SharedProgram mainProgram_;
     SharedProgram coverageProgram_;  // RenderOptions::shadeMain off
     ShadowMaps shadowMaps_;

@@ -75,6 +75,7 @@ SceneGpu::SceneGpu(const Scene& scene) : scene_(&scene) {
         const gpu_if::MaterialBlock b = materialBlock(m, textured);
         std::memcpy(blocks.data() + i * static_cast<std::size_t>(materialStride_), &b, sizeof b);
         materialDoubleSided_.push_back(m.doubleSided);
+        materialMasked_.push_back(m.alphaMask);
         materialTexture_.push_back(textured ? textures_[static_cast<std::size_t>(m.baseColorTexture)].id() : white_.id());
     }
     materials_ = gpu::createBuffer(blocks.data(), static_cast<GLsizeiptr>(blocks.size()));
@@ -107,13 +108,26 @@ void SceneGpu::draw(const DrawItem& item, FaceCulling culling) const {
 void SceneGpu::bindClusteredGeometry() const { glBindVertexArray(clusteredVao_.id()); }
 
 void SceneGpu::drawBatches(const DrawBatches& batches, FaceCulling culling) const {
-    std::vector<const void*> offsets;
     for (const DrawBatch& b : batches.batches()) {
         bindMaterial(b.material, culling);
-        offsets.clear();
-        for (std::uintptr_t o : b.byteOffsets) offsets.push_back(reinterpret_cast<const void*>(o));
-        glMultiDrawElements(GL_TRIANGLES, b.counts.data(), GL_UNSIGNED_INT, offsets.data(),
-                            static_cast<GLsizei>(b.counts.size()));
+        multiDraw(b);
+    }
+}
+
+void SceneGpu::multiDraw(const DrawBatch& b) const {
+    std::vector<const void*> offsets;
+    offsets.reserve(b.byteOffsets.size());
+    for (std::uintptr_t o : b.byteOffsets) offsets.push_back(reinterpret_cast<const void*>(o));
+    glMultiDrawElements(GL_TRIANGLES, b.counts.data(), GL_UNSIGNED_INT, offsets.data(), static_cast<GLsizei>(b.counts.size()));
+}
+
+void SceneGpu::drawDepthBatches(const DrawBatches& batches, FaceCulling culling, const DepthPrograms& programs) const {
+    GLuint bound = 0;
+    for (const DrawBatch& b : batches.batches()) {
+        const bool masked = materialMasked_[static_cast<std::size_t>(materialIndex(b.material))];
+        if (const GLuint program = masked ? programs.masked : programs.opaque; program != bound) glUseProgram(bound = program);
+        bindMaterial(b.material, culling);
+        multiDraw(b);
     }
 }
 
