@@ -85,9 +85,11 @@ struct SearchOptions {
 inline constexpr int kScreensPerEvaluation = 6;
 // The share of a tune's evaluations its final polish gets: one in this many (SearchOptions::polish).
 inline constexpr int kPolishShare = 4;
-// Screenings per polish evaluation: each round ranks every near move of a point (about 50 on
-// truck-town), so a polish that moves twice needs twice that.
-inline constexpr int kScreensPerPolish = 12;
+// Screenings per polish evaluation: each round ranks every near move of a point (about 60 on
+// truck-town), and a polish of 20 evaluations may make several rounds.
+inline constexpr int kScreensPerPolish = 20;
+// The polish also scales the whole range of depths (shadow distance and manual splits) by these.
+inline constexpr double kRangeScales[] = {0.8, 0.85, 0.9, 0.95, 1.05, 1.1, 1.2};
 
 // The second rung's rule: a neighbour screened as `mine`, of a point `from` within the budget
 // (evaluated in full as `fromFull`, screened as `fromScreen`), is worth a full evaluation when it

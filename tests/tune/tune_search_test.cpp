@@ -291,6 +291,38 @@ TEST(TuneSearchTest, ThePolishEvaluatesNearMovesTheScreenTurnedDown) {
     for (const Candidate& c : walk.evaluated) EXPECT_EQ(c.move.rfind("bias.slope", 0), std::string::npos) << c.move;
 }
 
+// The polish scales the whole range of depths: here the error wants the split at a sixth of the
+// shadow distance and the distance at 127.5 m, so from 25 and 150 m any one depth moved alone
+// breaks the ratio, and only both scaled by 0.85 together reach the best.
+TEST(TuneSearchTest, ThePolishScalesTheSplitsAndTheShadowDistanceTogether) {
+    Settings start;
+    start.camera.farPlane = 1000.0f;
+    start.cascades.count = 2;
+    start.cascades.scheme = SplitScheme::Manual;
+    start.cascades.manualSplits = {25.0f};
+    start.cascades.shadowDistance = 150.0f;
+    const Space all = defaultSpace(start);
+    Space space;
+    for (const char* p : {"cascades.shadowDistance", "cascades.manualSplits[0]"}) space.dims.push_back(*all.find(p));
+    auto error = [](const Settings& s) {
+        Evaluation e;
+        const double d = s.cascades.shadowDistance, split = s.cascades.manualSplits.at(0);
+        e.error = std::abs(d - 127.5) + 1000.0 * std::abs(split / d - 1.0 / 6.0);
+        e.costMs = 1.0;
+        return e;
+    };
+    SearchOptions opt;
+    opt.budget.ms = 2.0;
+    opt.evaluations = 8;
+    opt.polish = 7;
+    opt.screen = error;
+    const SearchResult r = search({start}, space, error, opt);
+    ASSERT_TRUE(r.best);
+    EXPECT_EQ(r.evaluated[*r.best].move, "cascades range x 0.85");
+    EXPECT_FLOAT_EQ(r.evaluated[*r.best].settings.cascades.shadowDistance, 127.5f);
+    EXPECT_FLOAT_EQ(r.evaluated[*r.best].settings.cascades.manualSplits.at(0), 21.3f);  // 21.25 to a tenth of a metre
+}
+
 // A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
 // the shorter one continued (the same points in the same order, then more), so it never ends
 // worse. With the limit scaled to the new count the walk screens longer and goes elsewhere.
