@@ -12,7 +12,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
-evaluations=${2:-60}
+evaluations=${2:-80}
 out=${3:-$(mktemp -d)/tune}
 size=${4:-640x360}
 objective=${5:-soft-filtered}
