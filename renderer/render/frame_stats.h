@@ -66,6 +66,10 @@ struct FrameStats {
     // RenderOptions::shadeMain off and the same camera and size as the last frame's unshaded main
     // pass: it was not drawn again, and work.main is that pass's (Renderer::keptMain_).
     bool mainKept = false;
+    // RenderOptions::shadeMain off and the same camera and size as the last depth prepass, with
+    // nothing drawn into the target's depth since: it was not drawn again, and its counted work
+    // is that prepass's (Renderer::keptPrepass_); the reduction runs as always.
+    bool prepassKept = false;
     int mainDraws = 0;
     int mainRanges = 0;        // draw commands: the index ranges of mainDraws' multi-draws (naive: = mainDraws)
     FrameWork work;            // counted work per pass (pass_work.h), filled by Renderer::render

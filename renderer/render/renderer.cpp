@@ -20,7 +20,8 @@ struct CounterSlots {
     int moments() const { return count + 2; }
     int mask() const { return count + 3; }
     int screenBlur() const { return count + 4; }
-    int total() const { return count + 5; }
+    int prepass() const { return count + 5; }  // the depth prepass's draw (bounds: its reductions)
+    int total() const { return count + 6; }
 };
 
 std::uint64_t pixels(int width, int height) { return std::uint64_t(width) * std::uint64_t(height); }
@@ -71,10 +72,10 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     const bool reduce = csm::needsSampleBounds(s.cascades);
     if (reduce) {
         timers_.begin(boundsTimer);
-        counters_.begin(slots.bounds());
-        samples = reduceSamples(s, aspect);
-        counters_.end(slots.bounds());
+        samples = reduceSamples(s, aspect, stats);
         timers_.end(boundsTimer);
+    } else {
+        keptPrepass_.reset();  // the main pass below writes the target's depth
     }
     plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds, reduce ? &samples : nullptr);
     stats.splits = plan_.splits;
@@ -110,8 +111,10 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     }
     const glm::mat4 mainViewProj = plan_.csProj * plan_.vsView;
     const bool keptMain = s.output.view != View::Side && reusesMain(mainViewProj, screen, reduce);
-    if (s.output.view == View::Side)
+    if (s.output.view == View::Side) {
         sidePass(s, orbit, target_);
+        keptPrepass_.reset();
+    }
     else if (!keptMain)
         mainPass(s, mainViewProj, target_, screen, reduce);
     if (keptMain) {
@@ -175,7 +178,16 @@ void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool scre
     fw.main = keptMain ? keptMain_->work : slotWork(slots.main());
     // With the screen-space path the main pass reads one R32F factor per fragment instead.
     addFilterReads(fw.main, screen ? csm::FilterTaps{1, 1, 4} : taps);
-    if (reduce) fw.depthBounds = slotWork(slots.bounds());
+    if (reduce) {
+        fw.depthBounds = slotWork(slots.bounds());
+        if (!stats.prepassKept) {
+            const PassWork drawn = counters_.read(slots.prepass());
+            if (keptPrepass_) keptPrepass_->work = drawn, keptPrepass_->counted = true;
+            fw.depthBounds += drawn;
+        } else {
+            fw.depthBounds += keptPrepass_->work;
+        }
+    }
     if (moments) fw.filter += slotWork(slots.moments());
     if (screen) {
         PassWork mask = slotWork(slots.mask());
@@ -185,24 +197,41 @@ void Renderer::countWork(const Settings& s, bool reduce, bool moments, bool scre
     }
 }
 
-csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect) {
+csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect, FrameStats& stats) {
     gpu::DebugGroup group("depth prepass");
+    const CounterSlots slots{s.cascades.count};
     const csm::CameraParams cam = csm::cameraFromSettings(s.camera, aspect);
     const glm::mat4 proj = csm::projectionMatrix(cam);
-    gpu::PassState state = gpu::opaqueScenePass(target_.framebuffer(), target_.width(), target_.height());
-    state.colorWrite = false;
-    gpu::applyPassState(state);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glUseProgram(depthProgram_->id());
-    viewBlock_.upload({proj * csm::viewMatrix(cam)});
-    viewBlock_.bind(ST_BLOCK_VIEW);
-    const DepthPrograms programs = depthPrograms();
-    drawVisible(proj * csm::viewMatrix(cam), &programs);  // culled and batched, as the main pass will draw it
+    const glm::mat4 viewProj = proj * csm::viewMatrix(cam);
+    stats.prepassKept = !options_.shadeMain && keptPrepass_ && keptPrepass_->counted && keptPrepass_->viewProj == viewProj &&
+                        keptPrepass_->width == target_.width() && keptPrepass_->height == target_.height();
+    if (!stats.prepassKept) {
+        counters_.begin(slots.prepass());
+        gpu::PassState state = gpu::opaqueScenePass(target_.framebuffer(), target_.width(), target_.height());
+        state.colorWrite = false;
+        gpu::applyPassState(state);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glUseProgram(depthProgram_->id());
+        viewBlock_.upload({viewProj});
+        viewBlock_.bind(ST_BLOCK_VIEW);
+        const DepthPrograms programs = depthPrograms();
+        drawVisible(viewProj, &programs);  // culled and batched, as the main pass will draw it
+        counters_.end(slots.prepass());
+        keptPrepass_.reset();
+        if (!options_.shadeMain) keptPrepass_ = KeptPrepass{viewProj, target_.width(), target_.height(), {}, visibleCommands_};
+    }
+    counters_.begin(slots.bounds());
+    const csm::SampleBounds out = reduce(s, proj, cam);
+    counters_.end(slots.bounds());
+    return out;
+}
+
+csm::SampleBounds Renderer::reduce(const Settings& s, const glm::mat4& proj, const csm::CameraParams& cam) {
     if (!depthBounds_) depthBounds_ = std::make_unique<DepthBoundsPass>();
     // Cleared and drawn into, then read by each reduction (D32F).
     PassWork& own = ownWork_[std::size_t(CounterSlots{s.cascades.count}.bounds())];
     const std::uint64_t texels = pixels(target_.width(), target_.height());
-    own.draws = visibleCommands_;
+    own.draws = keptPrepass_ ? keptPrepass_->commands : visibleCommands_;
     own.texelsCleared = texels;
     own.bytesRead = 4 * texels;
     const GLuint depth = target_.depthTexture();
@@ -373,7 +402,7 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     counters_.end(slots.main());
     timers_.end(s.cascades.count);
     PassWork& own = ownWork_[std::size_t(slots.main())];
-    own.draws = visibleCommands_;
+    own.draws = keptPrepass_ ? keptPrepass_->commands : visibleCommands_;
     own.texelsCleared = pixels(target.width(), target.height());
 }
 

@@ -95,8 +95,11 @@ private:
     // Both add the renderer's own counts of a redrawn map to `work` (draws, texels, bytes).
     void cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs, PassWork& work);
     void naiveCascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs, PassWork& work);
-    // SDSM: the main camera's depth drawn into the target (a prepass of this frame) and reduced.
-    csm::SampleBounds reduceSamples(const Settings& s, float aspect);
+    // SDSM: the main camera's depth drawn into the target (a prepass of this frame, or the kept
+    // one: keptPrepass_) and reduced. Counts the prepass and the reduction in their own slots.
+    csm::SampleBounds reduceSamples(const Settings& s, float aspect, FrameStats& stats);
+    // The reductions of the target's depth (the seen range, the cascades' sample bounds).
+    csm::SampleBounds reduce(const Settings& s, const glm::mat4& proj, const csm::CameraParams& cam);
     void recordDepthBounds(const Settings& s, const csm::SampleBounds* samples, FrameStats& stats) const;
     void auditZExtension(const Settings& s, FrameStats& stats) const;
     // Draws the shaded scene seen through viewProj into `target`; shadows always follow the
@@ -157,6 +160,18 @@ private:
         int draws = 0, ranges = 0;
     };
     std::optional<KeptMain> keptMain_;
+    // RenderOptions::shadeMain off: the depth prepass, kept like the main pass while its camera
+    // and size stay and no pass writes the target's depth (a main pass without the prepass, a
+    // side view). A tune's candidates of one view differ in shadow settings only, and the
+    // prepass depends on none: it was most of the render time of a view whose maps were kept.
+    struct KeptPrepass {
+        glm::mat4 viewProj{1.0f};
+        int width = 0, height = 0;
+        PassWork work;               // its draw's counted work (the counter slot's)
+        std::uint64_t commands = 0;  // its draw commands (visibleCommands_)
+        bool counted = false;        // work read back (countWork of the frame that drew it)
+    };
+    std::optional<KeptPrepass> keptPrepass_;
     bool reusesMain(const glm::mat4& viewProj, bool screen, bool prepassed) const;
 };
 

@@ -358,3 +358,48 @@ TEST_F(PassWorkGLTest, AnUnshadedMainPassOfTheSameCameraIsKept) {
     r.setOptions(RenderOptions{.shadeMain = false});
     EXPECT_FALSE(redrawn(r, s).mainKept) << "after a shaded frame the target holds the shaded image";
 }
+
+// The depth prepass of an unshaded frame is kept like the main pass: a frame of the same camera
+// that changes only shadow settings reduces the kept depth, and counts and places everything as
+// a renderer that draws the prepass afresh.
+TEST_F(PassWorkGLTest, AnUnshadedDepthPrepassOfTheSameCameraIsKept) {
+    const Scene scene = sheetStack(3);
+    Renderer r(scene);
+    r.setOptions(RenderOptions{.shadeMain = false});
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.cascades.depthBounds = DepthBounds::Fit;
+    s.cascades.fit = FitMode::Samples;
+    s.camera.position = {0.3f, 0.2f, 6.0f};
+    s.camera.target = {0.0f, 0.0f, -1.0f};
+    EXPECT_FALSE(redrawn(r, s).prepassKept);
+    for (float slope : {2.0f, 0.5f}) {
+        s.bias.slope = slope;
+        const FrameStats kept = redrawn(r, s);
+        Renderer fresh(scene);
+        fresh.setOptions(RenderOptions{.shadeMain = false});
+        const FrameStats drawn = redrawn(fresh, s);
+        EXPECT_TRUE(kept.prepassKept) << slope;
+        EXPECT_FALSE(drawn.prepassKept);
+        EXPECT_GT(drawn.work.depthBounds.fragments, 0u) << "the prepass's draw is counted";
+        EXPECT_EQ(kept.work, drawn.work) << slope;
+        EXPECT_EQ(kept.splits, drawn.splits);
+        EXPECT_EQ(kept.depthBounds.vsMin, drawn.depthBounds.vsMin);
+        EXPECT_EQ(kept.depthBounds.vsMax, drawn.depthBounds.vsMax);
+        ASSERT_EQ(r.plan().cascades.size(), fresh.plan().cascades.size());
+        for (std::size_t i = 0; i < r.plan().cascades.size(); ++i)
+            EXPECT_EQ(r.plan().cascades[i].viewProj, fresh.plan().cascades[i].viewProj) << i;
+        EXPECT_EQ(r.readRgba8(), fresh.readRgba8());
+    }
+    s.camera.position.x += 0.5f;
+    EXPECT_FALSE(redrawn(r, s).prepassKept) << "another camera draws it";
+    s.cascades.depthBounds = DepthBounds::Off;
+    s.cascades.fit = FitMode::Cascade;
+    redrawn(r, s);  // no prepass: the main pass writes the target's depth
+    s.cascades.depthBounds = DepthBounds::Fit;
+    s.cascades.fit = FitMode::Samples;
+    EXPECT_FALSE(redrawn(r, s).prepassKept) << "after a frame without it the target's depth is the main pass's";
+    r.setOptions({});
+    EXPECT_FALSE(redrawn(r, s).prepassKept) << "shaded, it is always drawn";
+}
