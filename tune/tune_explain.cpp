@@ -2,6 +2,7 @@
 
 #include "metrics/figure_table.h"
 #include "renderer/settings/field_table.h"
+#include "renderer/settings/kind_descriptors.h"
 #include "renderer/settings/settings_json.h"
 #include "sweep/sweep_results.h"
 
@@ -47,6 +48,9 @@ Explanation explain(const Settings& input, const Evaluation& inputEval, const Se
     const metrics::FigureRow& row = sweep::errorFigure(objectiveChoice);
     Explanation out{row.label, inputEval, tunedEval, {}};
     for (const Change& c : changesBetween(input, tuned)) {
+        // A field the tuned preset does not read (λ under manual splits) bought nothing there;
+        // undoing it would change another field (a λ move computes the splits again).
+        if (!fieldApplies(tuned, c.path)) continue;
         const FieldInfo* f = findField(c.path);
         Explained x{c, std::string(f->label) + (f->unit.empty() ? "" : " (" + std::string(f->unit) + ")"), {}, {}, ""};
         const Settings alone = withFieldJson(input, c.path, c.to);

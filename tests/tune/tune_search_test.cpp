@@ -3,6 +3,8 @@
 // when asked. No GL: the evaluator is a formula over the settings.
 #include "tune/tune_search.h"
 
+#include "tune/tune_explain.h"
+
 #include "renderer/settings/settings_json.h"
 
 #include <gtest/gtest.h>
@@ -321,6 +323,31 @@ TEST(TuneSearchTest, ThePolishScalesTheSplitsAndTheShadowDistanceTogether) {
     EXPECT_EQ(r.evaluated[*r.best].move, "cascades range x 0.85");
     EXPECT_FLOAT_EQ(r.evaluated[*r.best].settings.cascades.shadowDistance, 127.5f);
     EXPECT_FLOAT_EQ(r.evaluated[*r.best].settings.cascades.manualSplits.at(0), 21.3f);  // 21.25 to a tenth of a metre
+}
+
+// The explanation leaves out fields the tuned preset does not read: under manual splits the
+// weight lambda is dead, and undoing it would compute the splits again.
+TEST(TuneSearchTest, TheExplanationLeavesOutFieldsTheTunedPresetDoesNotRead) {
+    Settings input;
+    input.cascades.count = 3;
+    input.cascades.lambda = 0.75f;
+    Settings tuned = input;
+    tuned.cascades.scheme = SplitScheme::Manual;
+    tuned.cascades.manualSplits = {20.0f, 50.0f};
+    tuned.cascades.lambda = 0.5f;
+    tuned.bias.slope = 0.5f;
+    const Evaluator evaluate = [](const Settings& s) {
+        Evaluation e;
+        e.error = s.bias.slope;
+        e.costMs = 1.0;
+        return e;
+    };
+    const Explanation x = explain(input, evaluate(input), tuned, evaluate(tuned), "soft-filtered", evaluate);
+    std::set<std::string> paths;
+    for (const Explained& c : x.changes) paths.insert(c.change.path);
+    EXPECT_EQ(paths.count("cascades.lambda"), 0u);
+    EXPECT_EQ(paths.count("cascades.manualSplits"), 1u);
+    EXPECT_EQ(paths.count("bias.slope"), 1u);
 }
 
 // A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
