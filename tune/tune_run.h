@@ -33,7 +33,7 @@ struct TuneOptions {
     int views = 4;                                   // the preset's camera and views around it
     int holdOutEvery = 4;                            // every k-th view after the first is held out
     std::uint64_t seed = 1;
-    // A quarter of them polish the best point's bias at the end (kPolishShare, SearchOptions::polish).
+    // The last quarter polish the best point's depths and bias (kPolishShare, SearchOptions::polish).
     int evaluations = 80;
     const metrics::CostProfile* profile = nullptr;
     std::function<bool()> stopRequested;

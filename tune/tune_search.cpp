@@ -57,7 +57,6 @@ public:
     Walker(const Space& space, const Evaluator& evaluate, const SearchOptions& opt)
         : space_(space), evaluate_(evaluate), opt_(opt), rng_(opt.seed) {}
 
-
     // The index of `s` among the evaluated points, evaluating it if new; nullopt once the
     // evaluations are spent or a stop was requested.
     std::optional<std::size_t> visit(const Settings& s, const std::string& move) {
@@ -277,24 +276,17 @@ private:
     // neighbour better than the current point is taken. Returns the point reached (== cur when
     // nothing was better).
     std::optional<std::size_t> descend(std::size_t cur, bool refinements) {
-        return descendOver(cur, [&](const Dimension& d) { return d.refinement == refinements; }, false);
-    }
-
-    // descend() over the dimensions `pick` takes; with `allJumps` every one jumps (from a point
-    // within the budget).
-    template <class Pick>
-    std::optional<std::size_t> descendOver(std::size_t cur, const Pick& pick, bool allJumps) {
         std::vector<std::size_t> order;
         for (std::size_t i = 0; i < space_.dims.size(); ++i)
-            if (pick(space_.dims[i])) order.push_back(i);
+            if (space_.dims[i].refinement == refinements) order.push_back(i);
         std::shuffle(order.begin(), order.end(), rng_);
-        if (opt_.plan) opt_.plan(at(cur).settings, neighbours(at(cur).settings, order, at(cur).feasible, allJumps));
+        if (opt_.plan) opt_.plan(at(cur).settings, neighbours(at(cur).settings, order, at(cur).feasible));
         for (std::size_t di : order) {
             const Dimension& d = space_.dims[di];
             const Settings base = at(cur).settings;
             // Jumps only where screens decide which to evaluate: from a point over the budget every
             // move is a full evaluation, and a far value rarely walks back into it.
-            const bool jumps = (d.jumps || allJumps) && at(cur).feasible;
+            const bool jumps = d.jumps && at(cur).feasible;
             for (const auto& [j, s] : jumps ? bestScreenedFirst(moves(base, d, true)) : moves(base, d)) {
                 if (!seen(s) && !worthEvaluating(s, cur)) continue;
                 const auto k = visit(s, moveText(base, d, j));
@@ -309,11 +301,10 @@ private:
     }
 
     // The neighbours descend() tries from `base`, in its order, that are new and valid.
-    std::vector<Settings> neighbours(const Settings& base, const std::vector<std::size_t>& order, bool feasible,
-                                     bool allJumps) const {
+    std::vector<Settings> neighbours(const Settings& base, const std::vector<std::size_t>& order, bool feasible) const {
         std::vector<Settings> out;
         for (std::size_t di : order)
-            for (auto& [j, s] : moves(base, space_.dims[di], (space_.dims[di].jumps || allJumps) && feasible))
+            for (auto& [j, s] : moves(base, space_.dims[di], space_.dims[di].jumps && feasible))
                 if (!seen(s) && validate(s).empty()) out.push_back(std::move(s));
         return out;
     }

@@ -402,7 +402,7 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     counters_.end(slots.main());
     timers_.end(s.cascades.count);
     PassWork& own = ownWork_[std::size_t(slots.main())];
-    own.draws = keptPrepass_ ? keptPrepass_->commands : visibleCommands_;
+    own.draws = visibleCommands_;
     own.texelsCleared = pixels(target.width(), target.height());
 }
 

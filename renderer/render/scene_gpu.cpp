@@ -108,26 +108,27 @@ void SceneGpu::draw(const DrawItem& item, FaceCulling culling) const {
 void SceneGpu::bindClusteredGeometry() const { glBindVertexArray(clusteredVao_.id()); }
 
 void SceneGpu::drawBatches(const DrawBatches& batches, FaceCulling culling) const {
+    std::vector<const void*> offsets;
     for (const DrawBatch& b : batches.batches()) {
         bindMaterial(b.material, culling);
-        multiDraw(b);
+        multiDraw(b, offsets);
     }
 }
 
-void SceneGpu::multiDraw(const DrawBatch& b) const {
-    std::vector<const void*> offsets;
-    offsets.reserve(b.byteOffsets.size());
+void SceneGpu::multiDraw(const DrawBatch& b, std::vector<const void*>& offsets) const {
+    offsets.clear();
     for (std::uintptr_t o : b.byteOffsets) offsets.push_back(reinterpret_cast<const void*>(o));
     glMultiDrawElements(GL_TRIANGLES, b.counts.data(), GL_UNSIGNED_INT, offsets.data(), static_cast<GLsizei>(b.counts.size()));
 }
 
 void SceneGpu::drawDepthBatches(const DrawBatches& batches, FaceCulling culling, const DepthPrograms& programs) const {
     GLuint bound = 0;
+    std::vector<const void*> offsets;
     for (const DrawBatch& b : batches.batches()) {
         const bool masked = materialMasked_[static_cast<std::size_t>(materialIndex(b.material))];
         if (const GLuint program = masked ? programs.masked : programs.opaque; program != bound) glUseProgram(bound = program);
         bindMaterial(b.material, culling);
-        multiDraw(b);
+        multiDraw(b, offsets);
     }
 }
 

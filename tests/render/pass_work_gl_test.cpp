@@ -327,17 +327,25 @@ TEST_F(PassWorkGLTest, AnUnshadedMainPassCountsTheSameWork) {
     }
 }
 
+namespace {
+// The sheet stack seen from in front and a little to the side, small: the kept-pass tests' view.
+Settings obliqueStackView() {
+    Settings s;
+    s.output = {160, 120, View::Shaded};
+    s.cascades.mapSize = 256;
+    s.camera.position = {0.3f, 0.2f, 6.0f};
+    s.camera.target = {0.0f, 0.0f, -1.0f};
+    return s;
+}
+}  // namespace
+
 // Unshaded, the main pass of the same camera is drawn once: the next frames keep its counted work
 // (their own filter's taps added) and its image, and count what a renderer drawing it afresh counts.
 TEST_F(PassWorkGLTest, AnUnshadedMainPassOfTheSameCameraIsKept) {
     const Scene scene = sheetStack(2);
     Renderer r(scene);
     r.setOptions(RenderOptions{.shadeMain = false});
-    Settings s;
-    s.output = {160, 120, View::Shaded};
-    s.cascades.mapSize = 256;
-    s.camera.position = {0.3f, 0.2f, 6.0f};
-    s.camera.target = {0.0f, 0.0f, -1.0f};
+    Settings s = obliqueStackView();
     EXPECT_FALSE(redrawn(r, s).mainKept);
     for (FilterKind kind : {FilterKind::PcfNxN, FilterKind::Pcss}) {
         s.filter.kind = kind;
@@ -366,13 +374,9 @@ TEST_F(PassWorkGLTest, AnUnshadedDepthPrepassOfTheSameCameraIsKept) {
     const Scene scene = sheetStack(3);
     Renderer r(scene);
     r.setOptions(RenderOptions{.shadeMain = false});
-    Settings s;
-    s.output = {160, 120, View::Shaded};
-    s.cascades.mapSize = 256;
+    Settings s = obliqueStackView();
     s.cascades.depthBounds = DepthBounds::Fit;
     s.cascades.fit = FitMode::Samples;
-    s.camera.position = {0.3f, 0.2f, 6.0f};
-    s.camera.target = {0.0f, 0.0f, -1.0f};
     EXPECT_FALSE(redrawn(r, s).prepassKept);
     for (float slope : {2.0f, 0.5f}) {
         s.bias.slope = slope;
