@@ -13,6 +13,7 @@
 #include "tune/tune_journal.h"
 #include "tune/tune_views.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -249,10 +250,13 @@ private:
         // The references set the budget; their artifact shares are allowed too, or a reference
         // would not be a feasible answer at its own budget.
         for (const auto& [name, r] : refs_) widenLimits(objective_, artifactLimits(measured(r, "tuned").figures));
+        if (!opt_.constraints) objective_.atMost.clear();
         SearchOptions so;
         so.budget = budget_;
         so.evaluations = opt_.evaluations;
         so.polish = opt_.evaluations / kPolishShare;
+        so.front = opt_.front ? opt_.evaluations / kFrontShare : 0;
+        so.frontFloorMs = judge(cheap, {}).costMs;
         so.screenings = screeningLimit_;
         so.seed = opt_.seed;
         so.stopRequested = [this] {
@@ -276,8 +280,10 @@ private:
             return out;
         }
         if (result_.best) simplify(*result_.best);
+        if (opt_.front) sayFront();
         if (!result_.best) {
             writeProgress("infeasible", result_.evaluations, opt_.evaluations, &result_.evaluated);
+            if (opt_.front && writes()) writeFront(nullptr);
             out.infeasible = true;
             out.message = "no point within the budget of " + budgetText(budget_) + " kept the artifact classes at the input's "
                           "level in " + std::to_string(result_.evaluations) + " evaluations";
@@ -413,7 +419,7 @@ private:
     Json identity() const {
         Json refs = Json::array();
         for (const auto& [name, s] : refs_) refs.push_back({{"name", name}, {"settings", toOrderedJson(s)}});
-        return {{"version", kTuneVersion},
+        Json j = {{"version", kTuneVersion},
                 {"input", toOrderedJson(input_)},
                 {"objective", opt_.objective},
                 {"budgetMs", opt_.budgetMs ? Json(*opt_.budgetMs) : Json(nullptr)},
@@ -423,6 +429,10 @@ private:
                 {"holdOutEvery", opt_.holdOutEvery},
                 {"seed", opt_.seed},
                 {"costProfile", metrics::profileName(*opt_.profile)}};
+        // Only when not the default, so folders of earlier tunes still resume.
+        if (!opt_.constraints) j["constraints"] = "none";
+        if (opt_.front) j["front"] = true;
+        return j;
     }
 
     // --budget-ms / --budget-mib as given; --budget-from: the cheapest reference's modelled cost
@@ -539,7 +549,7 @@ private:
             const Json tuned = sweep::presetInFolder(dir, presetDir_, toOrderedJson(best.settings));
             writeTextAtomic(dir / "tuned.json", tuned.dump(2) + "\n");
             loadPreset(dir / "tuned.json");  // never leave a preset that does not load again
-            writeFront(best);
+            writeFront(&best);
         }
         // Every shard makes the measurements below, in the same order, so they share them.
         const Evaluator judged = [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); };
@@ -555,7 +565,47 @@ private:
 
     // Every evaluated point (and the input and references) as a sweep's results: the Pareto charts
     // of modelled cost and memory against the objective, and the front's presets.
-    void writeFront(const Candidate& best) {
+    // A point front/ charts: within the budget and the constraints; with --front, within the
+    // budget (the descent's rungs are judged on the objective alone).
+    bool onFront(const Candidate& c) const { return c.feasible || (opt_.front && c.eval.valid && budget_.fits(c.eval)); }
+
+    // The points of front/ that no other is better than in both cost and error, cheapest first.
+    std::vector<const Candidate*> frontPoints() const {
+        std::vector<const Candidate*> out;
+        for (const Candidate& c : result_.evaluated) {
+            if (!onFront(c)) continue;
+            bool dominated = false;
+            for (const Candidate& o : result_.evaluated)
+                dominated = dominated || (onFront(o) && o.eval.costMs <= c.eval.costMs && o.eval.error <= c.eval.error &&
+                                          (o.eval.costMs < c.eval.costMs || o.eval.error < c.eval.error));
+            const bool twin = std::any_of(out.begin(), out.end(), [&](const Candidate* o) {
+                return o->eval.costMs == c.eval.costMs && o->eval.error == c.eval.error;
+            });
+            if (!dominated && !twin) out.push_back(&c);
+        }
+        std::sort(out.begin(), out.end(), [](const Candidate* a, const Candidate* b) { return a->eval.costMs < b->eval.costMs; });
+        return out;
+    }
+
+    Json frontJson() const {
+        Json front = Json::array();
+        for (const Candidate* c : frontPoints())
+            front.push_back({{"costMs", c->eval.costMs}, {"mapBytes", c->eval.mapBytes}, {"error", c->eval.error},
+                             {"constraintsMet", c->eval.constraintsMet}, {"violated", c->eval.violated},
+                             {"id", settingsId(c->settings)}, {"move", c->move}});
+        return front;
+    }
+
+    void sayFront() const {
+        const std::vector<const Candidate*> f = frontPoints();
+        if (f.empty()) return say("front: no point within the budget");
+        say("front: " + std::to_string(f.size()) + " points within the budget, from " + fixed(f.front()->eval.costMs, 1) + " ms (" +
+            errorText(opt_.objective, f.front()->eval.error) + ") to " + fixed(f.back()->eval.costMs, 1) + " ms (" +
+            errorText(opt_.objective, f.back()->eval.error) + "); " + std::to_string(result_.frontRungs) +
+            " evaluations on the descent -> " + (opt_.outDir / "front" / "front.json").string());
+    }
+
+    void writeFront(const Candidate* best) {
         sweep::Manifest m;
         m.sweep = opt_.preset.stem().string();  // the chart's title starts with it: keep it short
         m.scene = input_.scene;
@@ -579,8 +629,8 @@ private:
         // evaluations.jsonl and explain.md.
         for (std::size_t i = 0; i < result_.evaluated.size(); ++i) {
             const Candidate& c = result_.evaluated[i];
-            if (c.feasible && !(c.settings == input_))
-                add(c.settings, c.eval, &c == &best ? "tuned" : "evaluation " + std::to_string(i + 1), false);
+            if (onFront(c) && !(c.settings == input_))
+                add(c.settings, c.eval, &c == best ? "tuned" : "evaluation " + std::to_string(i + 1), false);
         }
         sweep::writeReport(opt_.outDir / "front", m, points, {opt_.objective, "model"});
     }
@@ -599,13 +649,15 @@ private:
                   {"views", views},
                   {"evaluations", result_.evaluations},
                   {"search", {{"evaluations", result_.evaluations}, {"evaluationsToBest", result_.evaluationsToBest},
-                              {"screenings", result_.screenings}, {"screenedOut", result_.screenedOut}}},
+                              {"screenings", result_.screenings}, {"screenedOut", result_.screenedOut},
+                              {"polished", result_.polished}, {"frontRungs", result_.frontRungs}}},
                   {"seed", opt_.seed},
                   {"seconds", seconds},
                   {"secondsAllRuns", earlierSeconds_ + seconds},
                   {"input", {{"tuned", evalJson(inputEval)}}},
                   {"tuned", {{"tuned", evalJson(best.eval)}}},
                   {"references", Json::object()}};
+        if (opt_.front) s["front"] = frontJson();
         for (const auto& [name, r] : refs_) s["references"][name] = {{"tuned", evalJson(judge(measured(r, "tuned"), objective_))}};
         if (!compared_.empty()) s["compared"] = Json::object();
         for (const auto& [name, r] : compared_) s["compared"][name] = {{"tuned", evalJson(judge(measured(r, "tuned", false), objective_))}};

@@ -35,6 +35,13 @@ struct TuneOptions {
     std::uint64_t seed = 1;
     // The last quarter polish the best point's depths and bias (kPolishShare, SearchOptions::polish).
     int evaluations = 80;
+    // The soft truth's artifact classes (and a path's flicker) may not get worse than the input's
+    // and the references' (false: the objective alone, as a sweep's front ranks points).
+    bool constraints = true;
+    // Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point
+    // (SearchOptions::front): front/ and summary.json's "front" then hold the cost-error front
+    // of every point within the budget, judged on the objective alone (docs/tuning.md#front).
+    bool front = false;
     const metrics::CostProfile* profile = nullptr;
     std::function<bool()> stopRequested;
     long stopAfter = -1;  // make at most this many new evaluations, then stop as Ctrl-C would

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <set>
+#include <tuple>
 
 namespace st::tune {
 namespace {
@@ -119,23 +121,31 @@ public:
     }
 
     SearchResult run(const std::vector<Settings>& starts) {
-        const int polish = std::clamp(opt_.polish, 0, opt_.evaluations);
-        cap_ = opt_.evaluations;  // every start is measured, then the walk leaves the polish its share
-        screenCap_ = std::max(0, totalScreenings() - kScreensPerEvaluation * polish);
-        std::optional<std::size_t> cur = walk(starts, std::nullopt, opt_.evaluations - polish);
-        if (out_.stopped || polish == 0) return finish();
-        cap_ = opt_.evaluations;
-        screenCap_ = totalScreenings() + (kScreensPerPolish - kScreensPerEvaluation) * polish;
-        if (!out_.best) {  // nothing to polish: the walk goes on from the point nearest the budget
-            if (!cur)
-                for (std::size_t i = 0; i < out_.evaluated.size(); ++i)
-                    if (!cur || better(at(i), at(*cur))) cur = i;
-            if (cur) walk({}, cur, cap_);
-            return finish();
+        const int front = std::clamp(opt_.front, 0, opt_.evaluations);
+        const int searchCap = opt_.evaluations - front;
+        const int polish = std::clamp(opt_.polish, 0, searchCap);
+        cap_ = opt_.evaluations;  // every start is measured, then the walk leaves the polish and the front their shares
+        screenCap_ = std::max(0, totalScreenings() - kScreensPerEvaluation * (polish + front));
+        std::optional<std::size_t> cur = walk(starts, std::nullopt, searchCap - polish);
+        if (!out_.stopped && polish > 0) {
+            cap_ = std::max(searchCap, out_.evaluations);
+            screenCap_ = totalScreenings() - kScreensPerEvaluation * front + (kScreensPerPolish - kScreensPerEvaluation) * polish;
+            if (out_.best) {
+                const int before = out_.evaluations;
+                polishFrom(*out_.best);
+                out_.polished = out_.evaluations - before;
+            } else {  // nothing to polish: the walk goes on from the point nearest the budget
+                if (!cur)
+                    for (std::size_t i = 0; i < out_.evaluated.size(); ++i)
+                        if (!cur || better(at(i), at(*cur))) cur = i;
+                if (cur) walk({}, cur, cap_);
+            }
         }
-        const int before = out_.evaluations;
-        polishFrom(*out_.best);
-        out_.polished = out_.evaluations - before;
+        if (out_.stopped || front == 0) return finish();
+        cap_ = opt_.evaluations;
+        screenCap_ = totalScreenings() + (kScreensPerPolish - kScreensPerEvaluation) * polish +
+                     (kScreensPerFront - kScreensPerEvaluation) * front;
+        if (const std::optional<std::size_t> from = frontStart()) descendFront(*from);
         return finish();
     }
 
@@ -189,7 +199,7 @@ private:
                 if (space_.dims[i].polish) order.push_back(i);
             std::shuffle(order.begin(), order.end(), rng_);
             std::vector<std::pair<std::string, Settings>> range, near;
-            for (auto& [move, s] : rangeMoves(base))
+            for (auto& [move, s] : rangeMoves(base, kRangeScales))
                 if (!seen(s) && validate(s).empty()) range.emplace_back(std::move(move), std::move(s));
             for (std::size_t di : order)
                 for (auto& [j, s] : moves(base, space_.dims[di]))
@@ -213,18 +223,166 @@ private:
         }
     }
 
+    // Where the front descent starts: the best point; without one (no point within the budget
+    // meets the constraints), the lowest error within the budget; else the point least over it.
+    std::optional<std::size_t> frontStart() const {
+        if (out_.best) return out_.best;
+        std::optional<std::size_t> from;
+        for (std::size_t i = 0; i < out_.evaluated.size(); ++i) {
+            const Candidate& c = at(i);
+            if (!c.eval.valid) continue;
+            const bool fits = opt_.budget.fits(c.eval);
+            if (!from) {
+                from = i;
+                continue;
+            }
+            const Candidate& f = at(*from);
+            const bool fFits = opt_.budget.fits(f.eval);
+            if (fits != fFits ? fits : fits ? c.eval.error < f.eval.error : c.excess < f.excess) from = i;
+        }
+        return from;
+    }
+
+    // The front descent (SearchOptions::front): each rung aims an even share (in ratio) of the way
+    // from the point it is at down to frontFloorMs (rung()), and the descent goes on from the point it
+    // reached when that costs less in full. Once no cheaper move is left, the evaluations that
+    // remain fill the front's widest gaps in cost: a rung from the costlier point of the gap aims
+    // at its middle.
+    void descendFront(std::size_t cur) {
+        if (!opt_.screen) return;  // its moves are chosen on screens
+        bool bottom = false;
+        std::set<std::size_t> spent;  // gap tops no rung leads down from any more
+        while (out_.evaluations < cap_) {
+            // An even share of the way in ratio: a cost range may span orders of magnitude.
+            const double here = at(cur).eval.costMs, left = double(cap_ - out_.evaluations);
+            double aim = opt_.frontFloorMs > 0.0 && here > opt_.frontFloorMs ? here * std::pow(opt_.frontFloorMs / here, 1.0 / left)
+                                                                             : here - (here - opt_.frontFloorMs) / left;
+            if (bottom) {
+                const std::optional<std::pair<std::size_t, double>> gap = widestGap(spent);
+                if (!gap) return;
+                std::tie(cur, aim) = *gap;
+            }
+            const Rung r = rung(cur, aim);
+            if (r.stopped) return;
+            if (!r.reached) {
+                if (bottom) spent.insert(cur);
+                bottom = true;
+                continue;
+            }
+            // Not cheaper in full (the screens' cost ratio misled): the next rung tries another
+            // move from here, as this one is now seen.
+            if (!bottom && at(*r.reached).eval.valid && at(*r.reached).eval.costMs < at(cur).eval.costMs) cur = *r.reached;
+        }
+    }
+
+    struct Rung {
+        std::optional<std::size_t> reached;  // the point evaluated; none: no new cheaper move
+        bool stopped = false;                // the evaluations ran out or a stop was requested
+    };
+
+    // From `cur`, up to kFrontStepsPerRung moves not yet evaluated, each saving at least
+    // kFrontMinSaving of its screened cost (ties of no error change among tiny savings took rungs
+    // that moved nowhere) and gaining the least error per millisecond saved on its screen (a
+    // cheaper and better move first), until the full cost predicted from the screens reaches
+    // `aim`; then that point evaluated in full.
+    Rung rung(std::size_t cur, double aim) {
+        const Candidate here = at(cur);
+        const std::optional<Evaluation> hereScreen = screened(here.settings);
+        if (!hereScreen || hereScreen->costMs <= 0.0) return {};
+        Settings s = here.settings;
+        Evaluation sScreen = *hereScreen;
+        std::string move;
+        for (int step = 0; step < kFrontStepsPerRung; ++step) {
+            std::optional<std::pair<std::string, Settings>> pick;
+            Evaluation pickScreen;
+            double bestSlope = INFINITY, bestSaving = 0.0;
+            for (auto& [text, t] : cheaperMoves(s)) {
+                if (out_.screenings >= screeningLimit()) break;
+                if (seen(t)) continue;
+                const std::optional<Evaluation> e = screened(t);
+                const double saving = e ? sScreen.costMs - e->costMs : 0.0;
+                if (saving < kFrontMinSaving * hereScreen->costMs) continue;
+                const double slope = (e->error - sScreen.error) / saving;
+                if (slope < bestSlope || (slope == bestSlope && saving > bestSaving)) {
+                    bestSlope = slope;
+                    bestSaving = saving;
+                    pick.emplace(std::move(text), std::move(t));
+                    pickScreen = *e;
+                }
+            }
+            if (!pick) break;
+            move += (move.empty() ? "" : ", ") + pick->first;
+            s = std::move(pick->second);
+            sScreen = pickScreen;
+            if (here.eval.costMs * sScreen.costMs / hereScreen->costMs <= aim) break;
+        }
+        if (s == here.settings || seen(s)) return {};
+        const std::optional<std::size_t> k = visit(s, "front: " + move);
+        if (!k) return {std::nullopt, true};
+        ++out_.frontRungs;
+        return {k, false};
+    }
+
+    // The front's points (valid, within the budget, no other both cheaper and better), cheapest
+    // first; of each two neighbours the widest apart in cost whose costlier one is not `spent`:
+    // that one and the middle cost.
+    std::optional<std::pair<std::size_t, double>> widestGap(const std::set<std::size_t>& spent) const {
+        std::vector<std::size_t> front;
+        for (std::size_t i = 0; i < out_.evaluated.size(); ++i) {
+            const Evaluation& e = at(i).eval;
+            if (!e.valid || !opt_.budget.fits(e)) continue;
+            bool dominated = false;
+            for (std::size_t j = 0; j < out_.evaluated.size() && !dominated; ++j) {
+                const Evaluation& o = at(j).eval;
+                dominated = o.valid && opt_.budget.fits(o) && o.costMs <= e.costMs && o.error <= e.error &&
+                            (o.costMs < e.costMs || o.error < e.error || j < i);
+            }
+            if (!dominated) front.push_back(i);
+        }
+        std::sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) { return at(a).eval.costMs < at(b).eval.costMs; });
+        std::optional<std::pair<std::size_t, double>> widest;
+        double width = 0.0;
+        for (std::size_t n = 1; n < front.size(); ++n) {
+            const double lo = at(front[n - 1]).eval.costMs, hi = at(front[n]).eval.costMs;
+            if (spent.count(front[n]) || hi - lo <= width) continue;
+            width = hi - lo;
+            widest.emplace(front[n], 0.5 * (lo + hi));
+        }
+        return widest;
+    }
+
+    // The moves a front rung tries from `base`: one step along every dimension that may change
+    // the cost (bias does not), a cascade fewer on manual splits, and the range of depths nearer
+    // (kFrontRangeScales); the screens keep the cheaper ones.
+    std::vector<std::pair<std::string, Settings>> cheaperMoves(const Settings& base) const {
+        std::vector<std::pair<std::string, Settings>> out = rangeMoves(base, kFrontRangeScales);
+        for (auto& [text, s] : manualCountMoves(base))
+            if (s.cascades.count < base.cascades.count) out.emplace_back(std::move(text), std::move(s));
+        for (const Dimension& d : space_.dims) {
+            if (d.path.rfind("bias.", 0) == 0) continue;
+            const std::size_t i = currentIndex(base, d);
+            for (auto& [j, s] : moves(base, d))
+                if (j + 1 == i || j == i + 1) out.emplace_back(moveText(base, d, j), std::move(s));
+        }
+        std::vector<std::pair<std::string, Settings>> valid;
+        for (auto& t : out)
+            if (validate(t.second).empty()) valid.push_back(std::move(t));
+        return valid;
+    }
+
     // The whole range of depths nearer or farther by a few percent (kRangeScales): the shadow
     // distance and every manual split together, so each slice keeps its share. Finer than the
     // depths' ladders (22.5, 30 m; 120, 150 m on truck-town): there the walk's splits of 25 and
     // 60 m and distance of 150 m scaled by 0.85 read 0.3965 % misclassified against 0.4025 %
     // (soft filtered 0.005156 against 0.005284).
-    static std::vector<std::pair<std::string, Settings>> rangeMoves(const Settings& base) {
+    template <std::size_t N>
+    static std::vector<std::pair<std::string, Settings>> rangeMoves(const Settings& base, const double (&scales)[N]) {
         std::vector<std::pair<std::string, Settings>> out;
         const CascadeSettings& c = base.cascades;
         const bool manual = c.scheme == SplitScheme::Manual && !c.manualSplits.empty();
         if (c.shadowDistance <= 0.0f && !manual) return out;
         const auto scaled = [](float v, double f) { return float(std::round(double(v) * f * 10.0) / 10.0); };
-        for (double f : kRangeScales) {
+        for (double f : scales) {
             Settings s = base;
             if (s.cascades.shadowDistance > 0.0f) s.cascades.shadowDistance = scaled(s.cascades.shadowDistance, f);
             if (manual)

@@ -73,6 +73,17 @@ struct SearchOptions {
     // better (docs/tuning.md#polish). With no point within the budget the walk gets them.
     // kScreensPerPolish screenings per polish evaluation are kept for it.
     int polish = 0;
+    // Of `evaluations`, this many are kept for the very end: the front descent
+    // (docs/tuning.md#front). From the best point (the lowest error within the budget when no point
+    // meets the constraints), each rung takes the cheaper moves its screens rate best, error gained
+    // per millisecond saved, until the cost predicted from the screens falls an even share (in
+    // ratio) of the way to `frontFloorMs`, and evaluates that point in full; once no cheaper move
+    // is left, the rest fill the front's widest gaps in cost. The rungs are judged on the
+    // objective alone, as a sweep's front is: cheaper settings rarely keep the artifact classes
+    // of a costlier input. kScreensPerFront screenings per front evaluation are kept for it; without
+    // a screen there is no descent.
+    int front = 0;
+    double frontFloorMs = 0.0;  // where the last rung aims: the cheapest settings' modelled cost
     std::uint64_t seed = 1;
     std::function<bool()> stopRequested;  // checked before each evaluation (Ctrl-C)
     std::function<void(const SearchProgress&)> progress;
@@ -88,6 +99,15 @@ inline constexpr int kPolishShare = 4;
 // Screenings per polish evaluation: each round ranks every near move of a point (about 60 on
 // truck-town), and a polish of 20 evaluations may make several rounds.
 inline constexpr int kScreensPerPolish = 20;
+// The share of a tune's evaluations `tune --front` keeps for its front descent (SearchOptions::front).
+inline constexpr int kFrontShare = 4;
+// Screenings per front evaluation: a rung screens every cheaper neighbour (about 40 on truck-town)
+// for each of up to kFrontStepsPerRung moves.
+inline constexpr int kScreensPerFront = 120;
+inline constexpr int kFrontStepsPerRung = 3;
+inline constexpr double kFrontMinSaving = 0.01;
+// A front rung also tries the whole range of depths scaled by these (rangeMoves).
+inline constexpr double kFrontRangeScales[] = {0.6, 0.8};
 // The polish also scales the whole range of depths (shadow distance and manual splits) by these.
 inline constexpr double kRangeScales[] = {0.8, 0.85, 0.9, 0.95, 1.05, 1.1, 1.2};
 
@@ -117,6 +137,7 @@ struct SearchResult {
     int screenedOut = 0;               // of them, candidates not worth a full evaluation
     int evaluationsToBest = 0;         // full evaluations made when the best point was found
     int polished = 0;                  // evaluations the final polish made (SearchOptions::polish)
+    int frontRungs = 0;                // points the front descent evaluated (SearchOptions::front)
     bool stopped = false;              // by stopRequested
 };
 

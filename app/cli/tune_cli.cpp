@@ -29,6 +29,7 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
     auto budgetMiB = std::make_shared<double>(0.0);
     auto size = std::make_shared<std::string>();
     auto shard = std::make_shared<std::string>();
+    auto constraints = std::make_shared<std::string>("artifacts");
     CLI::App* cmd = cli.add_subcommand(
         "tune", "Find the best settings for a preset's scene within a cost budget, by search, and explain them");
     cmd->add_option("preset", opt->preset, "Preset to tune (its scene, camera, light and size stay)")->required();
@@ -52,6 +53,14 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "Error figure to minimise; the soft truth's artifact classes may not get worse than the input's")
         ->check(CLI::IsMember(sweep::errorChoices()))
         ->capture_default_str();
+    cmd->add_option("--constraints", *constraints,
+                    "artifacts: the soft truth's artifact classes (and a path's flicker) may not get worse than the "
+                    "input's; none: the objective alone, as a sweep's front ranks points")
+        ->check(CLI::IsMember({"artifacts", "none"}))
+        ->capture_default_str();
+    cmd->add_flag("--front", opt->front,
+                  "Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point: front/ "
+                  "then charts cost against error from the cheapest to the budget (docs/tuning.md#front)");
     cmd->add_option("--views", opt->views, "Views: the preset's camera, then viewpoints around it")
         ->check(CLI::Range(1, 16))
         ->capture_default_str();
@@ -79,7 +88,8 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                   "Measure every view with one renderer, redrawing every map at each change of view (the "
                   "baseline scripts/bench_tune.sh compares with; the result is the same)");
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");
-    cmd->callback([opt, budgetMs, budgetMiB, size, shard, ms, mib, &exitCode] {
+    cmd->callback([opt, budgetMs, budgetMiB, size, shard, constraints, ms, mib, &exitCode] {
+        opt->noConstraints = *constraints == "none";
         if (!shard->empty() && !parseShard(*shard, opt->shardIndex, opt->shardCount)) {
             std::fprintf(stderr, "error: --shard: expected k/n with 1 <= k <= n <= 1000, got '%s'\n", shard->c_str());
             exitCode = 2;

@@ -68,6 +68,8 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.holdOutEvery = opt.holdOutEvery;
         to.seed = opt.seed;
         to.evaluations = opt.evaluations;
+        to.constraints = !opt.noConstraints;
+        to.front = opt.front;
         to.stopAfter = opt.stopAfter;
         to.shard = {opt.shardIndex, opt.shardCount};
         to.shardWaitSeconds = opt.shardWaitSeconds;

@@ -22,6 +22,8 @@ struct TuneCommandOptions {
     int holdOutEvery = 4;
     std::uint64_t seed = 1;
     int evaluations = 80;
+    bool noConstraints = false;  // --constraints none
+    bool front = false;
     long stopAfter = -1;
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile
