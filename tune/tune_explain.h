@@ -18,6 +18,9 @@ struct Explained {
     Evaluation alone;        // input + this change
     Evaluation without;      // tuned - this change
     std::string line;        // "shadow distance 0 -> 250 m: alone -0.33 pp soft filtered, -12 % cost; ..."
+    // Fields set with it, first, as the change means nothing without them: manual splits come
+    // with the manual scheme (and the tuned count, when theirs differs from the input's).
+    std::vector<std::pair<std::string, nlohmann::json>> with;
 };
 
 struct Explanation {

@@ -489,6 +489,7 @@ private:
                 if (!c.eval.valid) continue;
                 Json j = pointJson(c.eval);
                 j["feasible"] = c.feasible;
+                j["onFront"] = onFront(c);
                 points.push_back(std::move(j));
                 if (c.feasible && (!best || better(c, (*evaluated)[*best]))) best = i;
             }

@@ -96,6 +96,12 @@ void searchFields(UiFrame& f) {
     int size[2] = {r.width, r.height};
     if (ImGui::InputInt2("size (px)", size)) r.width = size[0], r.height = size[1];
     recordItem(f.state.rects, "tune.size");
+    ImGui::Checkbox("front down to the cheapest", &r.front);
+    recordItem(f.state.rects, "tune.front");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Keep a quarter of the evaluations for a descent from the tuned settings to the\n"
+                          "cheapest ones: the chart's front then runs from there to the budget, each\n"
+                          "point judged on the objective alone (docs/tuning.md#front).");
 }
 
 void progress(UiFrame& f, const TuneView& v) {
@@ -142,7 +148,10 @@ void runControls(UiFrame& f, const std::string& problem) {
 
 void applyChanges(UiFrame& f, const std::vector<const TuneChange*>& changes, std::string what) {
     std::vector<std::pair<std::string, std::string>> assignments;
-    for (const TuneChange* c : changes) assignments.emplace_back(c->path, c->valueJson);
+    for (const TuneChange* c : changes) {
+        assignments.insert(assignments.end(), c->with.begin(), c->with.end());
+        assignments.emplace_back(c->path, c->valueJson);
+    }
     applyEdit(f, withAssignments(f.s, assignments));
     f.state.tune.applied = "applied " + std::move(what);
     f.state.tune.appliedAs = f.s;

@@ -21,6 +21,7 @@ struct TuneRequest {
     int evaluations = 24;
     int views = 3;                  // the camera and viewpoints around it; the last one is held out
     int width = 320, height = 180;  // measured at this size
+    bool front = false;             // `tune --front`: a quarter of the evaluations descend to cheaper settings
     bool operator==(const TuneRequest&) const = default;
 };
 
@@ -29,6 +30,8 @@ struct TuneChange {
     std::string line;       // "Shadow distance (m) 0 -> 250: alone -0.33 pp ..., in the tuned preset ..."
     std::string path;       // the field
     std::string valueJson;  // its tuned value, as JSON text
+    // Fields set first with it, as JSON text (manual splits come with the manual scheme).
+    std::vector<std::pair<std::string, std::string>> with;
 };
 
 struct TuneView {

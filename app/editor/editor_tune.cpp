@@ -79,6 +79,7 @@ std::vector<std::string> tuneArguments(const ui::TuneRequest& r, const fs::path&
     case ui::TuneRequest::Budget::MiB: args.insert(args.end(), {"--budget-mib", fixed(r.mib, 3)}); break;
     }
     if (withA) args.insert(args.end(), {"--compare-with", (dir / "A.json").string()});
+    if (r.front) args.push_back("--front");
     return args;
 }
 
@@ -102,15 +103,18 @@ void readTuneProgress(const Json& progress, ui::TuneView& v) {
     if (progress.contains("points"))
         for (const Json& p : progress["points"]) {
             v.chart.points.push_back(chartPoint(p, "evaluation " + std::to_string(v.chart.points.size() + 1), false, error));
-            feasible.push_back(p.value("feasible", false));
+            // "onFront": a --front tune's points within the budget that break a constraint are
+            // on its front too (docs/tuning.md#front); older progress files have only "feasible".
+            feasible.push_back(p.value("onFront", p.value("feasible", false)));
         }
     const std::size_t evaluations = v.chart.points.size();
     if (progress.contains("input")) v.chart.points.push_back(chartPoint(progress["input"], "current", true, error)), feasible.push_back(false);
     if (progress.contains("references") && progress["references"].contains("A"))
         v.chart.points.push_back(chartPoint(progress["references"]["A"], "A", true, error)), feasible.push_back(false);
     // The title's "N of M points": the evaluations the tune may make, and the marked presets.
-    v.chart.total = std::size_t(std::max(v.total, 0)) + (v.chart.points.size() - evaluations);
-    // The front of what the tune may pick: the feasible evaluations.
+    // The simplified tuned point is measured after the search, past the limit: "26 of 25" read wrong.
+    v.chart.total = std::max(std::size_t(std::max(v.total, 0)), evaluations) + (v.chart.points.size() - evaluations);
+    // The front of what the tune may pick: the feasible evaluations (with --front, those within the budget).
     std::vector<std::pair<double, double>> byTime, byMemory;
     constexpr double kOut = INFINITY;  // an infeasible point: never on the front
     for (std::size_t i = 0; i < v.chart.points.size(); ++i) {
@@ -126,8 +130,12 @@ void readTuneProgress(const Json& progress, ui::TuneView& v) {
 std::vector<ui::TuneChange> readExplanation(const Json& explain) {
     std::vector<ui::TuneChange> out;
     if (!explain.contains("changes")) return out;
-    for (const Json& c : explain["changes"])
-        out.push_back({c.value("text", std::string()), c.value("field", std::string()), c.contains("to") ? c["to"].dump() : "null"});
+    for (const Json& c : explain["changes"]) {
+        ui::TuneChange change{c.value("text", std::string()), c.value("field", std::string()), c.contains("to") ? c["to"].dump() : "null", {}};
+        if (c.contains("with") && c["with"].is_object())
+            for (const auto& [path, value] : c["with"].items()) change.with.emplace_back(path, value.dump());
+        out.push_back(std::move(change));
+    }
     return out;
 }
 

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <chrono>
 #include <functional>
 #include <thread>
@@ -73,9 +75,15 @@ TEST(EditorTuneReadTest, ProgressBecomesCountsBestAndAChartOfTheFeasibleFront) {
 TEST(EditorTuneReadTest, ExplanationLinesCarryTheFieldAndItsTunedValue) {
     const Json explain = Json::parse(R"({"changes": [
       {"field": "cascades.count", "from": 4, "to": 2, "text": "Cascades 4 -> 2: alone ..."},
-      {"field": "filter.kind", "from": "pcf2x2", "to": "hard", "text": "Filter pcf2x2 -> hard: ..."}]})");
+      {"field": "filter.kind", "from": "pcf2x2", "to": "hard", "text": "Filter pcf2x2 -> hard: ..."},
+      {"field": "cascades.manualSplits", "from": [], "to": [20.0, 50.0], "with": {"cascades.count": 3, "cascades.scheme": "manual"},
+       "text": "Manual splits ..."}]})");
     const std::vector<ui::TuneChange> c = readExplanation(explain);
-    ASSERT_EQ(c.size(), 2u);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_TRUE(c[0].with.empty());
+    ASSERT_EQ(c[2].with.size(), 2u);
+    EXPECT_EQ(c[2].with[0], (std::pair<std::string, std::string>{"cascades.count", "3"}));
+    EXPECT_EQ(c[2].with[1], (std::pair<std::string, std::string>{"cascades.scheme", "\"manual\""}));
     EXPECT_EQ(c[0].path, "cascades.count");
     EXPECT_EQ(c[0].valueJson, "2");
     EXPECT_EQ(c[1].valueJson, "\"hard\"");
@@ -100,6 +108,26 @@ TEST(EditorTuneReadTest, TheBudgetChoiceBecomesTheTunesOptions) {
     EXPECT_TRUE(has(args, "--budget-ms", "12.500"));
     EXPECT_TRUE(has(args, "--compare-with", "/d/A.json"));
     for (const std::string& a : args) EXPECT_NE(a, "--budget-from") << "a budget in ms is not the current one";
+    EXPECT_EQ(std::count(args.begin(), args.end(), "--front"), 0);
+    r.front = true;
+    args = tuneArguments(r, "/d", false);
+    EXPECT_EQ(std::count(args.begin(), args.end(), "--front"), 1);
+}
+
+// A --front tune's descent points break the input's constraints but are on its front.
+TEST(EditorTuneReadTest, AFrontTunesPointsWithinTheBudgetAreOnItsFront) {
+    const Json progress = Json::parse(R"({
+      "version": 1, "stage": "done", "evaluations": 3, "limit": 3, "objective": "soft-filtered", "budgetMs": 4.0,
+      "input": {"error": 0.009, "costMs": 3.5, "mapBytes": 4194304},
+      "points": [{"error": 0.004, "costMs": 3.0, "mapBytes": 2097152, "feasible": true, "onFront": true},
+                 {"error": 0.008, "costMs": 1.0, "mapBytes": 1048576, "feasible": false, "onFront": true},
+                 {"error": 0.001, "costMs": 8.0, "mapBytes": 4194304, "feasible": false, "onFront": false}]})");
+    ui::TuneView v;
+    readTuneProgress(progress, v);
+    ASSERT_EQ(v.chart.points.size(), 4u);
+    EXPECT_TRUE(v.chart.points[0].frontByTime);
+    EXPECT_TRUE(v.chart.points[1].frontByTime) << "cheaper, a constraint broken: on a --front tune's front";
+    EXPECT_FALSE(v.chart.points[2].frontByTime) << "over the budget";
 }
 
 class EditorTuneTest : public ::testing::Test {

@@ -350,6 +350,40 @@ TEST(TuneSearchTest, TheExplanationLeavesOutFieldsTheTunedPresetDoesNotRead) {
     EXPECT_EQ(paths.count("bias.slope"), 1u);
 }
 
+// Manual splits and the manual scheme are one change: each alone measured nothing (the scheme
+// alone computes splits again, the splits alone are not read), so each line said "+0 alone". One
+// line now sets both, with the tuned count when the input's has another number of splits, as the
+// editor's Apply of that line does; "in the tuned preset" undoes the scheme.
+TEST(TuneSearchTest, TheExplanationMeasuresManualSplitsWithTheirSchemeAndCount) {
+    Settings input;
+    input.cascades.count = 4;
+    Settings tuned = input;
+    tuned.cascades.count = 3;
+    tuned.cascades.scheme = SplitScheme::Manual;
+    tuned.cascades.manualSplits = {20.0f, 50.0f};
+    const Evaluator evaluate = [](const Settings& s) {
+        Evaluation e;
+        const bool manual = s.cascades.scheme == SplitScheme::Manual && s.cascades.manualSplits.size() == 2;
+        e.error = manual ? std::abs(s.cascades.manualSplits[0] - 20.0) * 0.01 + 0.1 : 0.5;
+        e.costMs = s.cascades.count;
+        return e;
+    };
+    const Explanation x = explain(input, evaluate(input), tuned, evaluate(tuned), "soft-filtered", evaluate);
+    const Explained* splits = nullptr;
+    for (const Explained& c : x.changes) {
+        EXPECT_NE(c.change.path, "cascades.scheme") << "the scheme is part of the splits' line";
+        if (c.change.path == "cascades.manualSplits") splits = &c;
+    }
+    ASSERT_NE(splits, nullptr);
+    EXPECT_DOUBLE_EQ(splits->alone.error, 0.1) << "the input with the tuned count, scheme and splits";
+    EXPECT_DOUBLE_EQ(splits->without.error, 0.5) << "the tuned preset with computed splits";
+    ASSERT_EQ(splits->with.size(), 2u);
+    EXPECT_EQ(splits->with[0].first, "cascades.count");
+    EXPECT_EQ(splits->with[1].second, "manual");
+    EXPECT_NE(splits->line.find("20, 50 m (with 3 cascades and the manual scheme)"), std::string::npos) << splits->line;
+    EXPECT_EQ(toJson(x)["changes"][std::size_t(splits - x.changes.data())]["with"]["cascades.scheme"], "manual");
+}
+
 // A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
 // the shorter one continued (the same points in the same order, then more), so it never ends
 // worse. With the limit scaled to the new count the walk screens longer and goes elsewhere.

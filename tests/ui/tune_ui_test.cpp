@@ -67,6 +67,13 @@ TEST_F(TuneUiTest, GoSendsTheBudgetAndObjectiveThePanelShows) {
     ASSERT_TRUE(d.last.tuneStart.has_value());
     EXPECT_EQ(d.last.tuneStart->budget, ui::TuneRequest::Budget::Ms);
     EXPECT_DOUBLE_EQ(d.last.tuneStart->ms, 30.0);
+    EXPECT_FALSE(d.last.tuneStart->front);
+    d.frames(2);
+    d.click("tune.front");
+    d.frames(2);
+    d.click("tune.go");
+    ASSERT_TRUE(d.last.tuneStart.has_value());
+    EXPECT_TRUE(d.last.tuneStart->front) << "the front checkbox asks for tune --front";
 }
 
 TEST_F(TuneUiTest, ABudgetOfNothingRefusesGo) {
@@ -116,6 +123,26 @@ TEST_F(TuneUiTest, EachExplanationLineAppliesAloneAsOneUndoStep) {
     Settings expected = before;
     expected.bias.slope = 0.5f;
     EXPECT_EQ(d.s, expected) << "only the slope bias";
+    d.frames(2);
+    d.pressKey(kKeyZ, true);
+    EXPECT_EQ(d.s, before);
+}
+
+// A line that needs other fields (manual splits: the count and the manual scheme) sets them with
+// it, in one undo step.
+TEST_F(TuneUiTest, ALineWithTheFieldsItNeedsAppliesThemTogether) {
+    openTunePanel();
+    ui::TuneView v = doneView();
+    v.changes = {{"Manual splits [] -> 20, 50 m (with 3 cascades and the manual scheme): ...", "cascades.manualSplits",
+                  "[20.0, 50.0]", {{"cascades.count", "3"}, {"cascades.scheme", "\"manual\""}}}};
+    d.in.tune = &v;
+    d.frames(2);
+    const Settings before = d.s;
+    ASSERT_NE(before.cascades.count, 3);
+    d.click("tune.change.0");
+    EXPECT_EQ(d.s.cascades.count, 3);
+    EXPECT_EQ(d.s.cascades.scheme, SplitScheme::Manual);
+    EXPECT_EQ(d.s.cascades.manualSplits, (std::vector<float>{20.0f, 50.0f}));
     d.frames(2);
     d.pressKey(kKeyZ, true);
     EXPECT_EQ(d.s, before);
