@@ -41,6 +41,13 @@ check "it prints progress with the best so far" "grep -q 'tune \[[0-9]*/16\] bes
 check "it explains each change" "grep -q 'alone' '$work/whole/explain.md' && jq -e '.changes | length > 0' '$work/whole/explain.json' >/dev/null"
 check "it scores the held-out view" "jq -e '.tuned.heldOut.error != null and (.heldOutHolds | type == \"boolean\")' '$work/whole/summary.json' >/dev/null"
 check "the front is charted" "[[ -s '$work/whole/front/pareto.png' && -s '$work/whole/front/results.csv' ]]"
+# A finished tune run again with fewer evaluations (or with more, walking elsewhere once the
+# polish's share moves) keeps the folder's better tuned.json: a continued tune never ends worse.
+cp -r "$work/whole" "$work/fewer"
+"$st" tune "$work/base.json" --budget-ms $budget --views 2 --hold-out-every 2 --evaluations 6 --seed $seed --size 96x54 \
+  --out "$work/fewer" >"$work/fewer.log" 2>&1
+check "a shorter run over a finished folder keeps its better tuned.json" \
+  "[[ $? -eq 0 ]] && grep -q 'kept the earlier run' '$work/fewer.log' && cmp -s '$work/whole/tuned.json' '$work/fewer/tuned.json'"
 p="$work/whole/progress.json" sm="$work/whole/summary.json"
 check "progress.json ends done, with the summary's count and best" "jq -e --slurpfile s '$sm' '.stage == \"done\" and .evaluations == \$s[0].search.evaluations and .best.error == \$s[0].tuned.tuned.error and .best.costMs == \$s[0].tuned.tuned.costMs and .budgetMs == $budget' '$p' >/dev/null"
 check "its feasible points are within the budget" "jq -e '[.points[] | select(.feasible)] | length > 0 and all(.costMs <= $budget)' '$p' >/dev/null"
