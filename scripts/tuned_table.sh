@@ -24,5 +24,5 @@ for summary in "$out"/*/summary.json; do
     | "| \($run) | \($rf["accuracy.misclassified"] | pct) / \($rf["soft.filteredError"] | num) / \($rf["cost.modelMs"] | ms) "
       + "| \($tf["accuracy.misclassified"] | pct) / \($tf["soft.filteredError"] | num) / \($tf["cost.modelMs"] | ms) "
       + "| \(if $r.heldOut then ($r.heldOut.figures["accuracy.misclassified"] | pct) + " -> " + (.tuned.heldOut.figures["accuracy.misclassified"] | pct) else "-" end) "
-      + "| \(.search.evaluations) (best at \(.search.evaluationsToBest)) | \((.secondsAllRuns // .seconds) | round) s | \(if $goal then "met" else "missed" end) |"' "$summary"
+      + "| \(.search.evaluations) (best at \(if .search.keptEarlier then "an earlier run" else .search.evaluationsToBest end)) | \((.secondsAllRuns // .seconds) | round) s | \(if $goal then "met" else "missed" end) |"' "$summary"
 done

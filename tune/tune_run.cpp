@@ -341,6 +341,7 @@ private:
                 " ms): better than this run's best (" + errorText(opt_.objective, result_.evaluated[*result_.best].eval.error) + ")");
         result_.evaluated.push_back(std::move(c));
         result_.best = result_.evaluated.size() - 1;
+        keptEarlier_ = true;
     }
 
     void say(const std::string& line) const {
@@ -686,7 +687,8 @@ private:
                   {"evaluations", result_.evaluations},
                   {"search", {{"evaluations", result_.evaluations}, {"evaluationsToBest", result_.evaluationsToBest},
                               {"screenings", result_.screenings}, {"screenedOut", result_.screenedOut},
-                              {"polished", result_.polished}, {"frontRungs", result_.frontRungs}}},
+                              {"polished", result_.polished}, {"frontRungs", result_.frontRungs},
+                              {"keptEarlier", keptEarlier_}}},
                   {"seed", opt_.seed},
                   {"seconds", seconds},
                   {"secondsAllRuns", earlierSeconds_ + seconds},
@@ -761,6 +763,7 @@ private:
     Objective objective_;
     SearchResult result_;
     int made_ = 0, resumed_ = 0, fromShards_ = 0;
+    bool keptEarlier_ = false;  // the result is the folder's earlier tuned.json (keepIfBetter)
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     double earlierSeconds_ = 0.0;  // of the runs this one resumed
     int screeningLimit_ = 0;       // the first run's (earlierRuns)
