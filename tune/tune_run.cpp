@@ -609,18 +609,8 @@ private:
     // The points of front/ that no other is better than in both cost and error, cheapest first.
     std::vector<const Candidate*> frontPoints() const {
         std::vector<const Candidate*> out;
-        for (const Candidate& c : result_.evaluated) {
-            if (!onFront(c)) continue;
-            bool dominated = false;
-            for (const Candidate& o : result_.evaluated)
-                dominated = dominated || (onFront(o) && o.eval.costMs <= c.eval.costMs && o.eval.error <= c.eval.error &&
-                                          (o.eval.costMs < c.eval.costMs || o.eval.error < c.eval.error));
-            const bool twin = std::any_of(out.begin(), out.end(), [&](const Candidate* o) {
-                return o->eval.costMs == c.eval.costMs && o->eval.error == c.eval.error;
-            });
-            if (!dominated && !twin) out.push_back(&c);
-        }
-        std::sort(out.begin(), out.end(), [](const Candidate* a, const Candidate* b) { return a->eval.costMs < b->eval.costMs; });
+        for (std::size_t i : costErrorFront(result_.evaluated, [this](const Candidate& c) { return onFront(c); }))
+            out.push_back(&result_.evaluated[i]);
         return out;
     }
 

@@ -2,6 +2,7 @@
 
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
+#include "report/pareto.h"
 
 #include <algorithm>
 #include <cmath>
@@ -227,19 +228,14 @@ private:
     // meets the constraints), the lowest error within the budget; else the point least over it.
     std::optional<std::size_t> frontStart() const {
         if (out_.best) return out_.best;
-        std::optional<std::size_t> from;
-        for (std::size_t i = 0; i < out_.evaluated.size(); ++i) {
-            const Candidate& c = at(i);
-            if (!c.eval.valid) continue;
+        // Within the budget before over it; then the lower error, or the smaller excess.
+        const auto rank = [this](const Candidate& c) {
             const bool fits = opt_.budget.fits(c.eval);
-            if (!from) {
-                from = i;
-                continue;
-            }
-            const Candidate& f = at(*from);
-            const bool fFits = opt_.budget.fits(f.eval);
-            if (fits != fFits ? fits : fits ? c.eval.error < f.eval.error : c.excess < f.excess) from = i;
-        }
+            return std::make_tuple(!fits, fits ? c.eval.error : c.excess);
+        };
+        std::optional<std::size_t> from;
+        for (std::size_t i = 0; i < out_.evaluated.size(); ++i)
+            if (at(i).eval.valid && (!from || rank(at(i)) < rank(at(*from)))) from = i;
         return from;
     }
 
@@ -327,19 +323,8 @@ private:
     // first; of each two neighbours the widest apart in cost whose costlier one is not `spent`:
     // that one and the middle cost.
     std::optional<std::pair<std::size_t, double>> widestGap(const std::set<std::size_t>& spent) const {
-        std::vector<std::size_t> front;
-        for (std::size_t i = 0; i < out_.evaluated.size(); ++i) {
-            const Evaluation& e = at(i).eval;
-            if (!e.valid || !opt_.budget.fits(e)) continue;
-            bool dominated = false;
-            for (std::size_t j = 0; j < out_.evaluated.size() && !dominated; ++j) {
-                const Evaluation& o = at(j).eval;
-                dominated = o.valid && opt_.budget.fits(o) && o.costMs <= e.costMs && o.error <= e.error &&
-                            (o.costMs < e.costMs || o.error < e.error || j < i);
-            }
-            if (!dominated) front.push_back(i);
-        }
-        std::sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) { return at(a).eval.costMs < at(b).eval.costMs; });
+        const std::vector<std::size_t> front =
+            costErrorFront(out_.evaluated, [this](const Candidate& c) { return c.eval.valid && opt_.budget.fits(c.eval); });
         std::optional<std::pair<std::size_t, double>> widest;
         double width = 0.0;
         for (std::size_t n = 1; n < front.size(); ++n) {
@@ -618,6 +603,19 @@ bool better(const Candidate& a, const Candidate& b) {
     }
     if (a.eval.error != b.eval.error) return a.eval.error < b.eval.error;
     return a.eval.costMs < b.eval.costMs;
+}
+
+std::vector<std::size_t> costErrorFront(const std::vector<Candidate>& points,
+                                        const std::function<bool(const Candidate&)>& member) {
+    std::vector<std::pair<double, double>> xy;
+    for (const Candidate& c : points)
+        xy.emplace_back(member(c) ? c.eval.costMs : NAN, member(c) ? c.eval.error : NAN);  // NaN: never on it
+    const std::vector<bool> on = report::paretoFront(xy);
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (on[i] && std::none_of(out.begin(), out.end(), [&](std::size_t j) { return xy[j] == xy[i]; })) out.push_back(i);
+    std::stable_sort(out.begin(), out.end(), [&](std::size_t a, std::size_t b) { return xy[a].first < xy[b].first; });
+    return out;
 }
 
 SearchResult search(const std::vector<Settings>& starts, const Space& space, const Evaluator& evaluate,

@@ -141,6 +141,11 @@ struct SearchResult {
     bool stopped = false;              // by stopRequested
 };
 
+// The indices of the candidates `member` keeps that no other kept one beats in both modelled cost
+// and error (report::paretoFront), cheapest first; of equal points, the first.
+std::vector<std::size_t> costErrorFront(const std::vector<Candidate>& points,
+                                        const std::function<bool(const Candidate&)>& member);
+
 // a is better than b: feasible before infeasible; among feasible, lower error, then lower cost;
 // among infeasible, less over the budget.
 bool better(const Candidate& a, const Candidate& b);
