@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     st::app::addCalibrateCommand(cli, exitCode);
     st::app::addTuneCommand(cli, exitCode);
     st::app::addCheckCommand(cli, exitCode);
+    st::app::addEngineCheckCommand(cli, exitCode);
     CLI11_PARSE(cli, argc, argv);
     return exitCode;
 }

@@ -19,7 +19,8 @@
 #define ST_FIT_SCENE 1
 #define ST_FIT_SPHERE 2
 #define ST_FIT_SAMPLES 3
-#define ST_FIT_COUNT 4
+#define ST_FIT_DIAGONAL 4  /* a square as wide as the slice's longer diagonal (three.js CSM) */
+#define ST_FIT_COUNT 5
 
 // ZExtension
 #define ST_ZEXT_NONE 0
@@ -47,7 +48,19 @@
 #define ST_FILTER_EVSM4 5
 #define ST_FILTER_MSM 6
 #define ST_FILTER_PCSS 7   /* percentage-closer soft shadows: blocker search, then PCF */
-#define ST_FILTER_COUNT 8
+#define ST_FILTER_VOGEL 8  /* bilinear compares on a Vogel disc rotated per pixel (three.js r182+) */
+#define ST_FILTER_COUNT 9
+
+// CasterFaces: which faces of single-sided materials the shadow pass draws (double-sided: both)
+#define ST_FACES_BOTH 0
+#define ST_FACES_BACK 1
+#define ST_FACES_FRONT 2
+#define ST_FACES_COUNT 3
+
+// OffsetUnit: what bias.normalOffset counts
+#define ST_OFFSET_TEXELS 0
+#define ST_OFFSET_METRES 1
+#define ST_OFFSET_COUNT 2
 
 // FilterWeights: the weights of the NxN PCF taps
 #define ST_WEIGHTS_BOX 0

@@ -119,8 +119,12 @@
     M(int, blockerTaps)    /* PCSS: taps per side of the blocker search */                         \
     M(float, pcssMaxRadius) /* PCSS: cap of the kernel radius, texels */                          \
     M(float, sunTan)       /* tan of the sun's angular diameter (light.angularDiameter) */         \
+    M(int, normalOffsetUnit) /* ST_OFFSET_*: normalOffset in texels or metres */                 \
+    M(int, vogelTaps)      /* taps of the Vogel-disc filter */                                    \
+    M(float, filterRadius) /* Vogel-disc filter: radius in texels */                              \
     M(int, cascadePad2)                                                                           \
     M(int, cascadePad3)                                                                           \
+    M(int, cascadePad4)                                                                           \
     A(vec4, pcfWeights, 3) /* 1-D tap weights of the NxN filter, [k/4][k%4] for tap k - size/2 */ \
     A(vec4, blurWeights, 5) /* moment blur: weight of taps +-k, [k/4][k%4], k = 0..blurRadius */  \
     A(CascadeData, cascade, ST_MAX_CASCADES)

@@ -20,8 +20,10 @@ struct ShadowResult {
     int cascade;   // -1 beyond the shadow range
 };
 
+// bias.normalOffsetUnit: texels of cascade i, or metres (three.js's normalBias, shadowmap_vertex.glsl.js).
 vec3 shadowCoord(int i, vec3 wsPos, vec3 wsNormal) {
-    vec3 p = wsPos + wsNormal * (normalOffset * cascade[i].biasScale.z * cascade[i].texelWorld);
+    float unit = normalOffsetUnit == ST_OFFSET_METRES ? 1.0 : cascade[i].texelWorld;
+    vec3 p = wsPos + wsNormal * (normalOffset * cascade[i].biasScale.z * unit);
     return (cascade[i].shadowMatrix * vec4(p, 1.0)).xyz;
 }
 
@@ -56,6 +58,7 @@ vec2 edgeMargin(int i) {
     float radius = 1.0;
     if (filterKind == ST_FILTER_PCF_NXN) radius = float(filterSize / 2) + 1.0;
     else if (filterKind == ST_FILTER_PCSS) radius = ceil(pcssMaxRadius) + 1.0;
+    else if (filterKind == ST_FILTER_VOGEL) radius = ceil(filterRadius) + 1.0;
     else if (filterKind >= ST_FILTER_VSM && filterKind <= ST_FILTER_MSM) radius = float(blurRadius) + 1.0;
     return radius * cascade[i].uvPerTexel.xy;
 }
@@ -208,6 +211,29 @@ float pcfNxN(int i, vec2 uv, float z, vec2 dzduv) {
     return sum;
 }
 
+// three.js r187 (src/renderers/shaders/ShaderChunk/shadowmap_pars_fragment.glsl.js, getShadow for
+// PCFShadowMap): vogelTaps hardware-bilinear compares on a Vogel disc of `filterRadius` texels,
+// rotated per pixel by interleaved gradient noise of the fragment's window position (Jimenez 2014).
+// Its texel is 1 / the map's size, so the disc is in texels of cascade i's own texture.
+float interleavedGradientNoise(vec2 position) {
+    return fract(52.9829189 * fract(dot(position, vec2(0.06711056, 0.00583715))));
+}
+
+vec2 vogelDiskSample(int k, int n, float phi) {
+    const float goldenAngle = 2.399963229728653;
+    float r = sqrt((float(k) + 0.5) / float(n));
+    float theta = float(k) * goldenAngle + phi;
+    return vec2(cos(theta), sin(theta)) * r;
+}
+
+float pcfVogel(int i, vec2 uv, float z, vec2 dzduv) {
+    vec2 radius = filterRadius * cascade[i].uvPerTexel.xy;
+    float phi = interleavedGradientNoise(gl_FragCoord.xy) * 6.283185307179586;
+    float sum = 0.0;
+    for (int k = 0; k < vogelTaps; ++k) sum += bilinearTap(i, uv + vogelDiskSample(k, vogelTaps, phi) * radius, uv, z, dzduv);
+    return sum / float(vogelTaps);
+}
+
 // A moment filter's lit share from the filtered moments of cascade i. The footprint comes from
 // the world-position derivatives (textureGrad): implicit ones are undefined in this branch.
 float momentShadow(int i, vec2 uv, float z, vec3 wsDx, vec3 wsDy) {
@@ -290,6 +316,7 @@ float sampleCascade(int i, vec3 ts, vec3 wsDx, vec3 wsDy, float tanTheta) {
     if (filterKind == ST_FILTER_HARD) return hardTap(i, ts.xy, z, dzduv);
     if (filterKind == ST_FILTER_PCF2X2) return pcf2x2(i, ts.xy, z, dzduv);
     if (filterKind == ST_FILTER_PCSS) return pcss(i, ts.xy, z, dzduv);
+    if (filterKind == ST_FILTER_VOGEL) return pcfVogel(i, ts.xy, z, dzduv);
     return pcfNxN(i, ts.xy, z, dzduv);
 }
 

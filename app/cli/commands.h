@@ -13,5 +13,6 @@ void addExportCommand(CLI::App& cli, int& exitCode);
 void addCalibrateCommand(CLI::App& cli, int& exitCode);
 void addTuneCommand(CLI::App& cli, int& exitCode);
 void addCheckCommand(CLI::App& cli, int& exitCode);
+void addEngineCheckCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

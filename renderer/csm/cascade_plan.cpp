@@ -64,6 +64,7 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.stabilize = cs.stabilize;
     fp.zExtension = cs.zExtension;
     fp.zExtensionDistance = cs.zExtensionDistance;
+    fp.lightDepth = cs.lightDepth;
     fp.padTexels = s.filter.padding ? filterPaddingTexels(s.filter) : 0;
     fp.wsSceneBounds = wsSceneBounds;
     fp.minFovY = glm::radians(cs.fitFovY);

@@ -38,8 +38,12 @@ CasterVolume casterVolume(const Settings& s, const CameraParams& cam, std::span<
     // How far off the receiver's own x,y a pixel's taps reach (shadow_sampling.glsl): the NxN
     // kernel's radius, one texel of the 2x2 comparison, the normal offset; plus one texel spare
     // for float rounding. The texel is the map's: fit.texelWorldSize.
-    const float taps = s.filter.kind == FilterKind::PcfNxN ? float(s.filter.size / 2) : 0.0f;
-    const float offset = cascadeBias(s.bias, index).normalOffset;
+    const float taps = s.filter.kind == FilterKind::PcfNxN  ? float(s.filter.size / 2)
+                       : s.filter.kind == FilterKind::Vogel ? std::ceil(s.filter.radius)
+                                                            : 0.0f;
+    const float rawOffset = cascadeBias(s.bias, index).normalOffset;
+    const float offset = s.bias.normalOffsetUnit == OffsetUnit::Metres ? rawOffset / std::max(fit.texelWorldSize, 1e-9f)
+                                                                       : rawOffset;  // in texels
     v.margin = fit.texelWorldSize * (taps + 2.0f + offset);
     v.lsReceiverMinZ -= fit.texelWorldSize * (offset + 1.0f);  // normal offset moves receivers in z too
     return v;

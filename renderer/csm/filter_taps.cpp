@@ -22,6 +22,7 @@ FilterTaps filterTapsPerFragment(const FilterSettings& f, bool receiverPlane) {
         case FilterKind::Hard: return {1, 1, kDepthBytes};
         case FilterKind::Pcf2x2: return {perBilinear, 4, kDepthBytes};
         case FilterKind::PcfNxN: return {n2 * perBilinear, 4 * n2, kDepthBytes};
+        case FilterKind::Vogel: return {f.vogelTaps * perBilinear, 4 * f.vogelTaps, kDepthBytes};
         case FilterKind::Pcss: {
             const int blockers = f.blockerTaps * f.blockerTaps;  // raw reads, one texel each
             return {blockers + n2 * perBilinear, blockers + 4 * n2, kDepthBytes};

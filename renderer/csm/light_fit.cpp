@@ -39,6 +39,8 @@ void validateFit(const FitParams& p) {
     const float d = p.zExtensionDistance;
     if (p.zExtension == ZExtension::Distance && !(d >= 0.0f && std::isfinite(d)))
         fail("cascades.zExtensionDistance must be >= 0, got " + str(d));
+    if (!(p.lightDepth >= 0.0f && std::isfinite(p.lightDepth)))
+        fail("cascades.lightDepth must be >= 0, got " + str(p.lightDepth));
 }
 
 // Box before snapping, with the size the texel grid is derived from: for the sphere the exact
@@ -84,6 +86,35 @@ SliceBox sphereBox(const CameraParams& cam, float vsNear, float vsFar, const glm
     const glm::vec4 wsCentre = inverseViewMatrix(cam) * glm::vec4(0.0f, 0.0f, -s.vsDepth, 1.0f);
     const glm::vec3 lsCentre(lsView * wsCentre);
     return {{lsCentre - s.radius, lsCentre + s.radius}, glm::vec2(2.0f * s.radius)};
+}
+
+// three.js r187 (examples/jsm/csm/CSM.js, _updateShadowBounds): a square as wide as the slice's
+// longer diagonal, the far face's or the body's (far corner (+x,+y) to near corner (-x,-y)), so
+// its size does not depend on the view's orientation; centred on the slice's light-space box.
+SliceBox diagonalBox(const CameraParams& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
+    const Corners ws = sliceCornersFromCamera(cam, vsNear, vsFar);  // near (-,-) (+,-) (+,+) (-,+), then far
+    const float width = std::max(glm::distance(ws[6], ws[4]), glm::distance(ws[6], ws[0]));
+    SliceBox box = cornerBox(cam, vsNear, vsFar, lsView);
+    const glm::vec2 centre(box.ls.center());
+    box.ls.min.x = centre.x - 0.5f * width, box.ls.max.x = centre.x + 0.5f * width;
+    box.ls.min.y = centre.y - 0.5f * width, box.ls.max.y = centre.y + 0.5f * width;
+    box.size = glm::vec2(width);
+    return box;
+}
+
+// three.js's snap (CSM.js update()): the box's centre floored to whole texels of size / m, the
+// box kept at its size around it; with an even m its edges land on the same grid.
+Aabb snapCentreToTexels(Aabb box, glm::vec2 size, int mapSize, const std::optional<glm::dvec2>& phase) {
+    for (int axis = 0; axis < 2; ++axis) {
+        const double texel = double(size[axis]) / double(mapSize);
+        if (!(texel > 0.0)) continue;
+        const double shift = phase ? (*phase)[axis] : 0.0;
+        const double centre = 0.5 * (double(box.min[axis]) + double(box.max[axis])) + shift;
+        const double snapped = std::floor(centre / texel) * texel - shift;
+        box.min[axis] = static_cast<float>(snapped - 0.5 * double(size[axis]));
+        box.max[axis] = static_cast<float>(snapped + 0.5 * double(size[axis]));
+    }
+    return box;
 }
 
 // SDSM (Lauritzen et al. 2011, section 3.2): the light box of the samples the cascade holds,
@@ -183,6 +214,9 @@ Aabb extendZ(Aabb box, const glm::mat4& lsView, const FitParams& p) {
         box.min.z = std::min(box.min.z, lsScene.min.z);
         box.max.z = std::max(box.max.z, lsScene.max.z);
     }
+    // three.js's light camera spans lightNear..lightFar from a point lightMargin beyond the slice
+    // (CSM.js update()): a fixed depth that sets what a normalised-depth bias means in metres.
+    if (p.lightDepth > 0.0f) box.min.z = box.max.z - p.lightDepth;
     return box;  // None, Pancake: the slice's range (Pancake clamps casters to the near plane)
 }
 
@@ -222,8 +256,9 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     const auto i = static_cast<std::size_t>(index);
     out.vsNear = p.fit == FitMode::Scene ? splits[0] : splits[i];  // seed 004 "fit to scene"
     out.vsFar = splits[i + 1];
-    SliceBox box = p.fit == FitMode::Sphere ? sphereBox(frame.camera, out.vsNear, out.vsFar, rotation)
-                                            : cornerBox(frame.camera, out.vsNear, out.vsFar, rotation);
+    SliceBox box = p.fit == FitMode::Sphere     ? sphereBox(frame.camera, out.vsNear, out.vsFar, rotation)
+                   : p.fit == FitMode::Diagonal ? diagonalBox(frame.camera, out.vsNear, out.vsFar, rotation)
+                                                : cornerBox(frame.camera, out.vsNear, out.vsFar, rotation);
     if (p.fit == FitMode::Samples && p.lsSamples) {
         // The reduction's bounds are in the rotation-only frame of scene coordinates: moved into
         // this one by lsView's translation.
@@ -233,7 +268,8 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     } else {
         box = padBox(box, p.padTexels, p.mapSize);
     }
-    if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize, frame.phase);
+    if (p.stabilize && p.fit == FitMode::Diagonal) box.ls = snapCentreToTexels(box.ls, box.size, p.mapSize, frame.phase);
+    else if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize, frame.phase);
     out.lsSlice = box.ls;
     const Aabb ls = extendZ(box.ls, out.lsView, p);
     out.lsBox = ls;

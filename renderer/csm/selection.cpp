@@ -23,6 +23,7 @@ int filterReachTexels(FilterKind filter, int filterSize) {
 
 int filterPaddingTexels(const FilterSettings& f) {
     if (f.kind == FilterKind::Pcss) return static_cast<int>(std::ceil(f.pcssMaxRadius)) + 1;
+    if (f.kind == FilterKind::Vogel) return static_cast<int>(std::ceil(f.radius)) + 1;
     if (isMomentFilter(f.kind)) return f.blurRadius + 1;
     return filterReachTexels(f.kind, f.size);
 }

@@ -1,11 +1,14 @@
-// Bevy: CascadeShadowConfigBuilder, DirectionalLight and DirectionalLightShadowMap.
-// Sources (bevyengine/bevy): crates/bevy_light/src/cascade.rs (CascadeShadowConfigBuilder::default,
-// calculate_cascade_bounds: cascades after the first spaced geometrically up to maximum_distance;
-// build_directional_light_cascades: cascade i starts at (1 - overlap_proportion) x the previous far
-// bound), crates/bevy_light/src/directional_light.rs (DEFAULT_SHADOW_DEPTH_BIAS,
-// DEFAULT_SHADOW_NORMAL_BIAS, DirectionalLightShadowMap::default), crates/bevy_pbr/src/render/
-// light.rs (normal bias x sqrt 2) and shadows.wesl (both offsets applied to the receiver, in
-// metres and in cascade texels).
+// Bevy: CascadeShadowConfig, DirectionalLight, DirectionalLightShadowMap and the camera's ContactShadows.
+// Sources (bevyengine/bevy; docs/engines.md lists the commit and lines): crates/bevy_light/src/cascade.rs
+// (CascadeShadowConfig's public fields bounds, overlap_proportion, minimum_distance: any split list;
+// CascadeShadowConfigBuilder::default and calculate_cascade_bounds, which space the later bounds
+// geometrically; build_directional_light_cascades: cascade i starts at (1 - overlap_proportion) x the
+// previous far bound), crates/bevy_pbr/src/render/light.rs (MAX_CASCADES_PER_LIGHT 4: the bounds past
+// the fourth are dropped with a warning; normal bias x sqrt 2), crates/bevy_light/src/directional_light.rs
+// (DEFAULT_SHADOW_DEPTH_BIAS, DEFAULT_SHADOW_NORMAL_BIAS, DirectionalLightShadowMap::default,
+// soft_shadow_size, contact_shadows_enabled), crates/bevy_pbr/src/render/shadows.wesl and
+// shadow_sampling.wesl (both offsets applied to the receiver, in metres and in cascade texels; PCSS
+// with a search region of soft_shadow_size metres), crates/bevy_pbr/src/contact_shadows.rs.
 #include "renderer/export/export_common.h"
 
 #include "renderer/settings/number_text.h"
@@ -18,42 +21,38 @@ namespace {
 
 using M = Mapping;
 
-// Largest distance between the preset's interior splits 2..N-1 and Bevy's geometric ones.
-double geometricError(const PresetFacts& f) {
-    const size_t n = f.splits.size() - 1;
-    double worst = 0.0;
-    for (size_t i = 1; i + 1 < n; ++i) {
-        const double bevy = f.splits[1] * std::pow(double(f.end) / f.splits[1], double(i) / double(n - 1));
-        worst = std::max(worst, std::fabs(bevy - f.splits[i + 1]));
-    }
-    return worst;
-}
+// crates/bevy_pbr/src/render/light.rs MAX_CASCADES_PER_LIGHT (1 on WebGL 2).
+constexpr int kBevyMaxCascades = 4;
 
+// Bevy's cascades are whatever CascadeShadowConfig.bounds lists (its fields are public; the builder
+// only fills them with a geometric series), so the preset's splits go across exactly, up to 4.
 void addCascades(EngineExport& e, const Settings& s, const PresetFacts& f) {
     const int n = s.cascades.count;
-    e.add("CascadeShadowConfigBuilder.num_cascades", n, M::Exact, "cascades.count");
-    e.add("CascadeShadowConfigBuilder.minimum_distance", round6(f.nearPlane), M::Exact,
+    const int used = std::min(n, kBevyMaxCascades);
+    std::vector<double> bounds;
+    for (int i = 1; i <= used; ++i) bounds.push_back(round6(i < used ? f.splits[size_t(i)] : f.end));
+    e.add("CascadeShadowConfig.bounds", numbers(bounds), n <= kBevyMaxCascades ? M::Exact : M::Approximated,
+          n <= kBevyMaxCascades
+              ? "the far bound of each cascade: z1 .. z" + std::to_string(n - 1) +
+                    " and the end of the shadowed range; set the config's fields directly (the builder would space "
+                    "the bounds after the first geometrically)"
+              : "Bevy draws at most 4 cascades (MAX_CASCADES_PER_LIGHT; it warns and drops the bounds past the fourth, "
+                "so shadows would end there): the preset's first 3 splits, the fourth cascade stretched to the end of "
+                "the shadowed range");
+    e.add("CascadeShadowConfig.minimum_distance", round6(f.nearPlane), M::Exact,
           "the camera near plane, where shadowtune's first cascade starts");
-    e.add("CascadeShadowConfigBuilder.maximum_distance", round6(f.end), M::Exact,
-          "cascades.shadowDistance, or the camera far plane when 0");
-    const double err = n >= 3 ? geometricError(f) : 0.0;
-    e.add("CascadeShadowConfigBuilder.first_cascade_far_bound", round6(n > 1 ? f.splits[1] : f.end),
-          err <= 0.01 ? M::Exact : M::Approximated,
-          n == 1 ? "ignored with one cascade"
-                 : "z1; Bevy spaces the later splits geometrically from it to maximum_distance" +
-                       (n >= 3 ? ", off the preset's by up to " + formatNumber(round6(err)) + " m" : std::string()));
     // Bevy blends over overlap x far_k at the end of cascade k; shadowtune over blendBand x its
-    // depth range (z_{k+1} - z_k). Converted on cascade 1, whose ratio every interior cascade of
-    // geometric splits shares (cascade 0 with one or two cascades).
-    const size_t k = n >= 3 ? 1 : 0;
-    const double overlap = n > 1 ? s.cascades.blendBand * (f.splits[k + 1] - f.splits[k]) / f.splits[k + 1] : 0.0;
-    e.add("CascadeShadowConfigBuilder.overlap_proportion", round6(overlap), M::Approximated,
+    // depth range (z_{k+1} - z_k). Converted on cascade 1 (cascade 0 with one or two cascades); the
+    // ratio differs between cascades unless the splits are geometric.
+    const size_t k = used >= 3 ? 1 : 0;
+    const double overlap = used > 1 ? s.cascades.blendBand * (f.splits[k + 1] - f.splits[k]) / f.splits[k + 1] : 0.0;
+    e.add("CascadeShadowConfig.overlap_proportion", round6(overlap), M::Approximated,
           "blendBand x (z" + std::to_string(k + 1) + " - z" + std::to_string(k) + ") / z" + std::to_string(k + 1) +
-              "; Bevy's cascades also overlap in their light boxes, shadowtune's do not");
+              "; one proportion for every cascade; Bevy's cascades also overlap in their light boxes, shadowtune's do not");
     e.add("DirectionalLightShadowMap.size", s.cascades.mapSize, M::Exact, "cascades.mapSize, per cascade");
 }
 
-void addBias(EngineExport& e, const Settings& s) {
+void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
     const BiasSettings& b = s.bias;
     e.add("DirectionalLight.shadow_depth_bias", round6(b.constant), M::Exact,
           "metres toward the light, applied to the receiver, as bias.constant");
@@ -66,11 +65,14 @@ void addBias(EngineExport& e, const Settings& s) {
                                 : "Gaussian: Castano's 9-tap filter, about a 5x5 kernel (Bevy's default)");
     if (isMomentFilter(k))
         e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent, "Bevy has no moment shadow maps");
+    // shadow_sampling.wesl: the blocker search reaches soft_shadow_size x (up to 0.875) metres around the
+    // receiver (uv offset = size / (texel x map size)), the blur is (z_blocker - z) x size / z in the cascade's
+    // depth: a world size, not an angle, so no value gives light.angularDiameter's penumbra at every distance.
     if (k == FilterKind::Pcss)
-        e.add("DirectionalLight.soft_shadow_size", round6(s.light.angularDiameter * 3.14159265358979 / 180.0),
-              M::Approximated,
-              "light.angularDiameter in radians; Bevy's PCSS needs the experimental_pbr_pcss feature (the unit of this "
-              "field is not confirmed against Bevy's shader)");
+        e.add("DirectionalLight.soft_shadow_size", round6(s.filter.pcssMaxRadius * f.texel.front()), M::Approximated,
+              "metres (a world size, not an angle): the reach of shadowtune's blocker search in cascade 0, "
+              "filter.pcssMaxRadius " + formatFloat(s.filter.pcssMaxRadius) + " texels x " + texelNote(f) +
+                  "; Bevy's penumbra does not follow light.angularDiameter; needs the experimental_pbr_pcss feature");
     if (b.slope > 0.0f) e.add("(slope bias)", round6(b.slope), M::NoEquivalent, "Bevy has no slope-scaled bias");
     if (b.receiverPlane && fieldApplies(s, "bias.receiverPlane")) e.add("(receiver-plane bias)", true, M::NoEquivalent, "Bevy has no receiver-plane bias");
 }
@@ -78,20 +80,32 @@ void addBias(EngineExport& e, const Settings& s) {
 }  // namespace
 
 EngineExport exportBevy(const Settings& s, const PresetFacts& f) {
-    EngineExport e{Engine::Bevy, "Bevy: CascadeShadowConfigBuilder and DirectionalLight", {}};
+    EngineExport e{Engine::Bevy, "Bevy: CascadeShadowConfig and DirectionalLight", {}};
     addCascades(e, s, f);
-    addBias(e, s);
+    addBias(e, s, f);
     const CascadeSettings& c = s.cascades;
     e.add("(cascade fit)", "diameter-sized box, texel-snapped, depth-clamped",
           c.fit == FitMode::Sphere && c.stabilize && c.zExtension == ZExtension::Pancake ? M::Approximated
                                                                                           : M::NoEquivalent,
-          "Bevy always sizes a cascade by its slice's diagonal, snaps it and pancakes casters (unclipped depth)");
+          "Bevy always sizes a cascade by its slice's longer diagonal (far face or body) rounded up to whole metres, "
+          "floors its centre to texels and pancakes casters (unclipped depth); shadowtune's sphere is at least as wide "
+          "as that diagonal before Bevy's rounding");
+    // crates/bevy_pbr/src/contact_shadows.rs: a camera component (linear_steps 16, thickness 0.1, length 0.3
+    // by default) and DirectionalLight.contact_shadows_enabled: a screen-space march toward the light.
+    if (s.filter.contact != ContactShadows::Off) {
+        e.add("DirectionalLight.contact_shadows_enabled", true, M::Exact, "filter.contact: a screen-space march toward the sun");
+        e.add("ContactShadows.length", round6(s.filter.contactLength), M::Approximated,
+              "filter.contactLength in metres; a component on the camera (it needs the depth prepass); Bevy's march "
+              "and its refinement are its own");
+        e.add("ContactShadows.linear_steps", s.filter.contactSteps, M::Approximated, "filter.contactSteps");
+        e.add("ContactShadows.thickness", round6(s.filter.contactThickness), M::Approximated,
+              "filter.contactThickness in metres: how thick each depth-buffer sample is assumed to be");
+    }
     addKnobsWithoutSetting(
         e, s,
         {.cameraRelative = "Bevy fits its cascades in world space, in f32",
          .fitFovY = "Bevy fits each cascade to the camera's current projection",
-         .contact = "not a DirectionalLight or cascade setting this export targets (bevy #16164 tracks screen-space "
-                    "contact shadows)"});
+         .contact = ""});
     addShadowtuneOnly(e, s, false);
     return e;
 }

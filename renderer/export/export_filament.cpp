@@ -1,9 +1,12 @@
 // Filament: LightManager::ShadowOptions of a directional light, and the View's shadow type.
-// Sources (google/filament): filament/include/filament/LightManager.h (ShadowOptions field
-// initialisers and their doc comments: split positions from 0 = camera near to 1 = far or
-// shadowFar, constantBias in world units), shaders/src/shadowing.fs (ShadowSample_PCF_Low:
-// hardware PCF + 3x3 Gaussian from 4 bilinear taps, the default PCF quality; ShadowSample_VSM:
-// moments of exp(vsmExponent x depth), and with ELVSM of -1/that too).
+// Sources (google/filament; docs/engines.md lists the commit and lines): filament/include/filament/
+// LightManager.h (ShadowOptions field initialisers and their doc comments), filament/src/
+// ShadowMapManager.cpp (splits near + (far or shadowFar - near) x position; normal bias 0.5 x normalBias x
+// texel; DEPTH16 maps for PCF), filament/src/ShadowMap.cpp (stable: the slice's bounding sphere, or a
+// sphere of radius shadowFar around the camera, snapped, with LiSPSM and caster focusing off; constant
+// bias baked into the light camera), shaders/src/common_shadowing.glsl (the normal offset x sin of the
+// angle to the light), shaders/src/light_directional.fs (the fade near shadowFar), shaders/src/
+// shadowing.fs (ShadowSample_PCF_Low: hardware PCF + 3x3 Gaussian from 4 bilinear taps; VSM).
 #include "renderer/export/export_common.h"
 
 #include "renderer/settings/number_text.h"
@@ -28,7 +31,19 @@ void addCascades(EngineExport& e, const Settings& s, const PresetFacts& f) {
           used ? "(z_i - near) / (shadowFar or far - near); entries past count-1 are Filament's defaults"
                : "unused with one cascade; Filament's defaults kept");
     e.add("shadowFar", round6(c.shadowDistance), M::Exact, "cascades.shadowDistance; 0 = the camera far plane");
-    e.add("stable", c.stabilize, M::Exact, "cascades.stabilize: snap to texels, rotation-invariant size");
+    // ShadowMap.cpp: stable switches the fit to a sphere (computeFocusParams: the slice's corners' mean and
+    // farthest corner, or {camera, shadowFar} when shadowFar > 0), snaps it (snapLightFrustum) and turns off
+    // LiSPSM (updateDirectional) and the focus on casters (computeLightFrustumBounds).
+    const bool sphere = c.fit == FitMode::Sphere;
+    e.add("stable", c.stabilize, M::Approximated,
+          !c.stabilize ? "false, as cascades.stabilize: Filament then fits each light frustum to the slice, the receivers "
+                         "and the casters, unsnapped"
+          : sphere     ? "cascades.stabilize with the sphere fit: Filament's stable fits a sphere around the slice's "
+                         "corners (their mean, the farthest as radius; with shadowFar > 0 a sphere of radius shadowFar "
+                         "around the camera), snaps it and turns LiSPSM and caster focusing off"
+                       : "cascades.stabilize: Filament's stable also swaps the preset's '" +
+                             std::string(EnumNames<FitMode>::names[size_t(c.fit)]) +
+                             "' fit for a sphere around the slice (radius shadowFar around the camera with shadowFar > 0)");
 }
 
 // View::setShadowType (PCF, VSM, DPCF, PCSS) and, for VSM, View::setVsmShadowOptions.
@@ -52,18 +67,24 @@ void addFilter(EngineExport& e, const Settings& s) {
               "shadowtune from light.angularDiameter");
     } else {
         e.add("View::setShadowType", "PCF", k == FilterKind::Hard ? M::NoEquivalent : M::Approximated,
-              "PCF (default) samples with ShadowSample_PCF_Low, a 3x3 Gaussian from 4 hardware-compared taps");
+              "PCF (default) samples 16-bit depth maps (DEPTH16; shadowtune's are 32-bit float) with "
+              "ShadowSample_PCF_Low, a 3x3 Gaussian from 4 hardware-compared taps");
     }
 }
 
 void addBias(EngineExport& e, const Settings& s) {
     const BiasSettings& b = s.bias;
     e.add("constantBias", round6(b.constant), M::Exact, "metres, shadows moved away from the light");
-    e.add("normalBias", round6(b.normalOffset), M::Approximated,
-          "scales Filament's maximum sampling error (about a texel) along the normal; shadowtune's is in texels");
+    // ShadowMapManager.cpp: normalBias x 0.5 x the cascade's texel ("a half-texel size"); common_shadowing.glsl
+    // computeLightSpacePosition moves the receiver along its normal by that x sin of the angle to the light.
+    e.add("normalBias", round6(2.0 * b.normalOffset), M::Approximated,
+          "2 x bias.normalOffset: Filament moves the receiver along its normal by normalBias x half a texel x the "
+          "sine of the angle to the light; shadowtune by bias.normalOffset texels at every angle");
     e.add("polygonOffsetSlope", round6(b.slope), M::Approximated,
           "glPolygonOffset factor: depth slope per texel, ~ texel x tan, shadowtune's slope unit");
-    e.add("polygonOffsetConstant", 0.5, M::NoEquivalent, "units of depth resolution; Filament's default kept");
+    e.add("polygonOffsetConstant", 0.5, M::NoEquivalent,
+          "units of depth resolution of Filament's 16-bit PCF maps (DEPTH16); Filament's default kept; shadowtune's "
+          "32-bit float maps have no such step");
     addFilter(e, s);
     if (b.receiverPlane && fieldApplies(s, "bias.receiverPlane")) e.add("(receiver-plane bias)", true, M::NoEquivalent, "not a ShadowOptions field");
 }
@@ -92,7 +113,18 @@ EngineExport exportFilament(const Settings& s, const PresetFacts& f) {
         {.cameraRelative = "not a ShadowOptions field; Filament fits each cascade in world space",
          .fitFovY = "Filament fits each cascade to the camera's current frustum",
          .contact = ""});
-    addShadowtuneOnly(e, s, false);
+    // light_directional.fs with PerViewUniforms.cpp: with shadowFar > 0 the shadow fades as
+    // saturate(5 - 5 z^2 / shadowFar^2) in view depth z, from 0.894 x shadowFar to shadowFar; none without.
+    const bool fades = s.cascades.shadowDistance > 0.0f;
+    if (fades && s.cascades.fadeBand > 0.0f)
+        e.add("(far fade)", round6(s.cascades.fadeBand), M::Approximated,
+              "cascades.fadeBand: Filament always fades from 0.894 x shadowFar to shadowFar, in squared view depth, "
+              "and has no setting for the band");
+    else if (fades)
+        e.add("(far fade)", 0.0, M::NoEquivalent,
+              "Filament fades from 0.894 x shadowFar to shadowFar whenever shadowFar > 0; the preset has no "
+              "cascades.fadeBand");
+    addShadowtuneOnly(e, s, fades);
     return e;
 }
 

@@ -1,8 +1,13 @@
 // Unreal Engine 5, non-virtual cascaded shadow maps of a movable DirectionalLight.
-// Sources: Engine/Source/Runtime/Engine/Private/Components/DirectionalLightComponent.cpp
-// (UDirectionalLightComponent constructor: the defaults; FDirectionalLightSceneProxy::
-// GetSplitDistance and ComputeAccumulatedScale: the split positions), r.Shadow.MaxCSMResolution,
-// r.Shadow.CSMDepthBias and r.Shadow.CSMSlopeScaleDepthBias (ShadowRendering.cpp). UE works in cm.
+// Sources (docs/engines.md: Epic's repository is private; the API reference pages and public copies of
+// the files found by code search): Engine/Source/Runtime/Engine/Private/Components/
+// DirectionalLightComponent.cpp (UDirectionalLightComponent constructor: the defaults;
+// FDirectionalLightSceneProxy::GetSplitDistance and ComputeAccumulatedScale: the split positions),
+// Renderer/Private/ShadowRendering.cpp (r.Shadow.MaxCSMResolution, r.Shadow.CSMDepthBias 10,
+// r.Shadow.CSMSlopeScaleDepthBias 3, r.Shadow.CSMReceiverBias 0.9; UpdateShaderDepthBias:
+// ShaderSlopeDepthBias = DepthBias x SlopeScaleDepthBias, ShaderMaxSlopeDepthBias =
+// r.Shadow.ShadowMaxSlopeScaleDepthBias 1) and Shaders/Private/ShadowDepthVertexShader.usf (the slope
+// term: clamp(tan, 0, max slope) x ShaderSlopeDepthBias on the caster). UE works in cm.
 #include "renderer/export/unreal_splits.h"
 
 #include "renderer/export/export_common.h"
@@ -19,7 +24,8 @@ using M = Mapping;
 // world-space texel scale (bounds radius / resolution = half a texel): 10 * 0.5 * r / res
 // = 2.5 texels at the defaults. As texels per unit of ShadowBias: 10 / 2 = 5.
 constexpr double kCsmDepthBiasTexelsPerUnit = 5.0;
-constexpr double kCsmSlopeScaleDepthBias = 3.0;  // r.Shadow.CSMSlopeScaleDepthBias default
+constexpr double kCsmSlopeScaleDepthBias = 3.0;     // r.Shadow.CSMSlopeScaleDepthBias default
+constexpr double kShadowMaxSlopeScaleDepthBias = 1.0;  // r.Shadow.ShadowMaxSlopeScaleDepthBias default
 
 void addSplits(EngineExport& e, const Settings& s, const PresetFacts& f) {
     const int n = s.cascades.count;
@@ -42,12 +48,29 @@ void addSplits(EngineExport& e, const Settings& s, const PresetFacts& f) {
 
 void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
     const BiasSettings& b = s.bias;
-    e.add("ShadowBias", round6(b.constant / (kCsmDepthBiasTexelsPerUnit * f.texel.front())), M::Approximated,
+    const double shadowBias = b.constant / (kCsmDepthBiasTexelsPerUnit * f.texel.front());
+    e.add("ShadowBias", round6(shadowBias), M::Approximated,
           "bias.constant / (5 texels, texel " + texelNote(f) +
               "): UE's CSM depth bias = r.Shadow.CSMDepthBias 10 x ShadowBias x half a texel, per cascade");
-    e.add("ShadowSlopeBias", round6(b.slope / kCsmSlopeScaleDepthBias), M::Approximated,
-          "bias.slope / r.Shadow.CSMSlopeScaleDepthBias 3; UE's slope bias is in its depth-bias unit, "
-          "the conversion to shadowtune's texel x tan unit is not confirmed against the UE5 source");
+    // UpdateShaderDepthBias: ShaderSlopeDepthBias = DepthBias x r.Shadow.CSMSlopeScaleDepthBias x ShadowSlopeBias,
+    // so UE's slope bias is a multiple of its constant one: constant x 3 x ShadowSlopeBias x min(tan, 1) =
+    // 5 ShadowBias x 3 ShadowSlopeBias texels x min(tan, 1); shadowtune's is bias.slope texels x tan.
+    if (shadowBias > 0.0)
+        e.add("ShadowSlopeBias", round6(b.slope / (kCsmDepthBiasTexelsPerUnit * kCsmSlopeScaleDepthBias * shadowBias)),
+              M::Approximated,
+              "bias.slope / (ShadowBias x 5 x r.Shadow.CSMSlopeScaleDepthBias 3): UE's slope bias is its constant bias "
+              "x 3 x ShadowSlopeBias x tan, with tan clamped at r.Shadow.ShadowMaxSlopeScaleDepthBias 1");
+    else
+        e.add("ShadowSlopeBias", 0.5, b.slope > 0.0f ? M::NoEquivalent : M::Exact,
+              b.slope > 0.0f ? "UE's slope bias is a multiple of its constant bias, which this preset leaves at 0; "
+                               "UE's default 0.5 kept (it then adds nothing)"
+                             : "no slope bias, as this preset's; UE's default 0.5 kept (with ShadowBias 0 it adds nothing)");
+    e.add("r.Shadow.ShadowMaxSlopeScaleDepthBias", kShadowMaxSlopeScaleDepthBias, M::NoEquivalent,
+          "UE's default: the slope bias stops growing at tan 1 (45 degrees); shadowtune's grows to tan 10");
+    e.add("r.Shadow.CSMReceiverBias", 0.9, M::NoEquivalent,
+          "UE's default (\"Receiver bias used by CSM. Value between 0 and 1\"); reimplementations of UE's projection "
+          "shader read it as the width of a soft depth-compare transition at grazing angles (not confirmed in Epic's "
+          "source); shadowtune's test is a plain compare");
     if (b.normalOffset > 0.0f)
         e.add("(normal offset)", round6(b.normalOffset), M::NoEquivalent, "UE's CSM has no user normal-offset bias");
     const FilterKind k = s.filter.kind;

@@ -24,6 +24,7 @@ struct CascadeMapKey {
     std::uint64_t casters = 0;  // DrawBatches::hash() of the clusters drawn
     int layers = 0;             // of the map storage
     int mapSize = 0;
+    int casterFaces = 0;        // CasterFaces: which faces were drawn
     bool operator==(const CascadeMapKey&) const = default;
 };
 

@@ -41,6 +41,17 @@ PassWork mapWork(int size, std::size_t commands) {
 
 }  // namespace
 
+// Both: culling off (thin and open casters cast from both sides). Back or front: the other face
+// culled on single-sided materials only, as engines do (three.js WebGLShadowMap.js: a DoubleSide
+// material casts with both).
+GLenum casterCullFace(CasterFaces faces) {
+    return faces == CasterFaces::Back ? GL_FRONT : faces == CasterFaces::Front ? GL_BACK : GL_NONE;
+}
+
+FaceCulling casterCulling(CasterFaces faces) {
+    return faces == CasterFaces::Both ? FaceCulling::Keep : FaceCulling::PerMaterial;
+}
+
 void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& state, CascadeStats& cs,
                               PassWork& work) {
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
@@ -55,14 +66,15 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
         inBox.push_back(k);
         if (csm::casterMayShadow(clusters[k].wsBounds, volume)) batches_.add(clusters, k);
     }
-    const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.cascades(), shadowMaps_.tile(i).size};
+    const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.cascades(), shadowMaps_.tile(i).size,
+                            int(s.cascades.casterFaces)};
     const CascadeDecision d = cache_.decide(i, key);
     if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));
     CascadeStats& held = held_[std::size_t(i)];
     if (d.redraw) {
         shadowMaps_.beginCascade(i, state);  // its layer or tile: viewport, scissor, cleared
         viewBlock_.upload({fit.viewProj});
-        scene_.drawDepthBatches(batches_, FaceCulling::Keep, depthPrograms());
+        scene_.drawDepthBatches(batches_, casterCulling(s.cascades.casterFaces), depthPrograms());
         cache_.drawn(i, key, fit);
         work = mapWork(shadowMaps_.tile(i).size, batches_.rangeCount());
         held = CascadeStats{};
@@ -97,7 +109,7 @@ void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassStat
     viewBlock_.upload({fit.viewProj});
     for (const DrawItem& item : scene_.scene().draws) {
         if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
-        scene_.draw(item, FaceCulling::Keep);
+        scene_.draw(item, casterCulling(s.cascades.casterFaces));
         ++cs.casterDraws;
         cs.casterTriangles += item.indexCount / 3;
     }

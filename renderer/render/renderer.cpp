@@ -281,7 +281,7 @@ void Renderer::shadowPass(const Settings& s, FrameStats& stats) {
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     gpu::PassState state;
     state.depthTest = state.depthWrite = true;
-    state.cullFace = GL_NONE;  // thin and open casters must cast from both sides
+    state.cullFace = casterCullFace(s.cascades.casterFaces);
     state.depthClamp = pancake;
     state.colorWrite = false;  // depth only
     glUseProgram(depthProgram_->id());

@@ -32,6 +32,11 @@
 
 namespace st {
 
+// The shadow pass's culling for cascades.casterFaces (caster_pass.cpp): the face culled on
+// single-sided materials (GL_NONE for both) and how draws apply it.
+GLenum casterCullFace(CasterFaces faces);
+FaceCulling casterCulling(CasterFaces faces);
+
 struct RenderOptions {
     // The renderer before issue 11, kept as the benchmarks' baseline: one draw per scene item,
     // culled against each light box per item, no main-pass culling, every map every frame.

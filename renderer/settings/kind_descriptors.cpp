@@ -39,6 +39,7 @@ std::vector<KindDescriptor> filterKinds() {
         {ST_FILTER_PCSS, "",
          {"filter.size", "filter.weights", "filter.blockerTaps", "filter.pcssMaxRadius", kReceiverPlane},
          {S::Array, S::Atlas}},
+        {ST_FILTER_VOGEL, "", {"filter.vogelTaps", "filter.radius", kReceiverPlane}, {}},
     };
 }
 
@@ -170,8 +171,8 @@ constexpr std::string_view kIndependent[] = {
     "light.angularDiameter", "cascades.count", "cascades.shadowDistance", "cascades.depthBounds",
     "cascades.mapSize", "cascades.fit", "cascades.stabilize", "cascades.casterCulling", "cascades.updateInterval",
     "cascades.blendBand", "cascades.fadeBand", "cascades.cameraRelative", "cascades.fitFovY",
-    "cascades.matricesOneFrameLate", "filter.padding", "bias.constant", "bias.slope",
-    "bias.normalOffset", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
+    "cascades.matricesOneFrameLate", "cascades.lightDepth", "cascades.casterFaces", "filter.padding", "bias.constant",
+    "bias.slope", "bias.normalOffset", "bias.normalOffsetUnit", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
     "output.height", "path.frames", "path.keyframes", "measure.sunRays", "measure.artifactTexels",
     // The mode fields themselves: each one always applies.
     "filter.kind", "filter.screenSpace", "filter.contact", "cascades.scheme", "cascades.zExtension", "cascades.storage",

@@ -38,10 +38,37 @@ struct EnumNames<SplitScheme> {
 // Sphere: bounding sphere of the slice, size constant under rotation (seed 001).
 // Samples: the light-space bounds of the visible samples the cascade holds (Lauritzen et al.
 // 2011, "Sample Distribution Shadow Maps"), reduced from the camera's depth buffer.
-enum class FitMode { Cascade = ST_FIT_CASCADE, Scene = ST_FIT_SCENE, Sphere = ST_FIT_SPHERE, Samples = ST_FIT_SAMPLES };
+// Diagonal: a square as wide as the slice's longer diagonal (far face or body), centred on the
+// slice's light-space box, its centre floored to whole texels when stabilized (three.js r187,
+// examples/jsm/csm/CSM.js _updateShadowBounds and update()).
+enum class FitMode {
+    Cascade = ST_FIT_CASCADE,
+    Scene = ST_FIT_SCENE,
+    Sphere = ST_FIT_SPHERE,
+    Samples = ST_FIT_SAMPLES,
+    Diagonal = ST_FIT_DIAGONAL,
+};
 template <>
 struct EnumNames<FitMode> {
-    static constexpr std::array<std::string_view, ST_FIT_COUNT> names{"cascade", "scene", "sphere", "samples"};
+    static constexpr std::array<std::string_view, ST_FIT_COUNT> names{"cascade", "scene", "sphere", "samples", "diagonal"};
+};
+
+// Which faces of single-sided materials the shadow pass draws; double-sided ones draw both.
+// Back: the faces turned away from the sun, so a closed caster's stored depth is its far side and
+// its lit face never compares against itself (acne hidden; three.js's default, WebGLShadowMap.js
+// shadowSide; Woo 1992's "second depth" idea in its simplest form).
+enum class CasterFaces { Both = ST_FACES_BOTH, Back = ST_FACES_BACK, Front = ST_FACES_FRONT };
+template <>
+struct EnumNames<CasterFaces> {
+    static constexpr std::array<std::string_view, ST_FACES_COUNT> names{"both", "back", "front"};
+};
+
+// What bias.normalOffset counts: the cascade's texels (scales with the map's footprint) or metres
+// (three.js's and Babylon's normalBias).
+enum class OffsetUnit { Texels = ST_OFFSET_TEXELS, Metres = ST_OFFSET_METRES };
+template <>
+struct EnumNames<OffsetUnit> {
+    static constexpr std::array<std::string_view, ST_OFFSET_COUNT> names{"texels", "metres"};
 };
 
 // Where the split scheme places the splits: Off = [camera near, far or shadow distance];
@@ -85,11 +112,13 @@ enum class FilterKind {
     Evsm4 = ST_FILTER_EVSM4,
     Msm = ST_FILTER_MSM,
     Pcss = ST_FILTER_PCSS,
+    Vogel = ST_FILTER_VOGEL,
 };
 template <>
 struct EnumNames<FilterKind> {
     static constexpr std::array<std::string_view, ST_FILTER_COUNT> names{"hard", "pcf2x2", "pcf-nxn", "vsm",
-                                                                         "evsm2", "evsm4", "msm", "pcss"};
+                                                                         "evsm2", "evsm4", "msm", "pcss",
+                                                                         "pcf-vogel"};
 };
 constexpr bool isMomentFilter(FilterKind k) { return k >= FilterKind::Vsm && k <= FilterKind::Msm; }
 
@@ -147,11 +176,13 @@ struct EnumNames<View> {
 // The codes of an enum run 0..COUNT-1 with no gap, so a value indexes its name table and a code
 // read from a file is valid exactly when it is below the table's size.
 static_assert(int(SplitScheme::Manual) == ST_SPLIT_COUNT - 1 && int(SplitScheme::Uniform) == 0);
-static_assert(int(FitMode::Samples) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
+static_assert(int(FitMode::Diagonal) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
+static_assert(int(CasterFaces::Front) == ST_FACES_COUNT - 1 && int(CasterFaces::Both) == 0);
+static_assert(int(OffsetUnit::Metres) == ST_OFFSET_COUNT - 1 && int(OffsetUnit::Texels) == 0);
 static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBounds::Off) == 0);
 static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::None) == 0);
 static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
-static_assert(int(FilterKind::Pcss) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
+static_assert(int(FilterKind::Vogel) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
 static_assert(int(FilterWeights::Gaussian) == ST_WEIGHTS_COUNT - 1 && int(FilterWeights::Box) == 0);
 static_assert(int(ScreenSpace::Blur) == ST_SCREEN_COUNT - 1 && int(ScreenSpace::Off) == 0);
 static_assert(int(ContactShadows::March) == ST_CONTACT_COUNT - 1 && int(ContactShadows::Off) == 0);
@@ -200,6 +231,8 @@ struct CascadeSettings {
     bool stabilize = false;                // snap the light box to whole texels (seed 001)
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 100.0f;     // metres, for ZExtension::Distance
+    float lightDepth = 0.0f;               // metres from the box's near plane to its far one; 0 = to the slice's far side
+    CasterFaces casterFaces = CasterFaces::Both;
     Selection selection = Selection::Interval;
     float blendBand = 0.0f;                // fraction of a cascade's depth range blended into the next, 0..0.5
     bool casterCulling = true;             // cull casters whose shadow cannot reach the slice (Bittner 2011)
@@ -230,6 +263,10 @@ struct FilterSettings {
     // PCSS (filter.size taps per side spread over the estimated penumbra):
     int blockerTaps = 5;          // taps per side of the blocker search, odd
     float pcssMaxRadius = 32.0f;  // texels: cap of the search and kernel radius (see shadow_sampling.glsl)
+    // Vogel-disc PCF (three.js r187 shadowmap_pars_fragment.glsl.js): vogelTaps bilinear compares
+    // within `radius` texels, the disc rotated per pixel by interleaved gradient noise.
+    int vogelTaps = 5;
+    float radius = 1.0f;          // texels; 0 = every tap at the pixel's own point (the 2x2 compare)
     // Seed 001's screen-space path (any kind above makes the mask it blurs):
     ScreenSpace screenSpace = ScreenSpace::Off;
     int screenDownsample = 2;     // the mask is blurred at 1/N of the output size: 1, 2 (seed 001) or 4
@@ -244,9 +281,10 @@ struct FilterSettings {
 };
 
 struct BiasSettings {
-    float constant = 0.02f;     // metres along the light direction
+    float constant = 0.02f;     // metres toward the light (negative: away, as three.js's positive shadowBias)
     float slope = 1.0f;         // texel world sizes per unit of tan(angle to light)
-    float normalOffset = 0.0f;  // receiver moved along its normal, in texel world sizes
+    float normalOffset = 0.0f;  // receiver moved along its normal, in normalOffsetUnit
+    OffsetUnit normalOffsetUnit = OffsetUnit::Texels;
     bool receiverPlane = false; // derivative-based receiver-plane depth bias (seed 004)
     // Per cascade factors of constant, slope and normal offset (cascadeBias below): empty = 1 for every
     // cascade, else one per cascade. Factors, not values, so the global knobs stay the artist's one

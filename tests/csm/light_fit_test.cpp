@@ -207,3 +207,46 @@ TEST(LightFitTest, RejectsBadIndexMapSizeAndDirection) {
 
 }  // namespace
 }  // namespace st::csm
+
+namespace st::csm {
+namespace {
+
+// three.js r187 CSM.js: the box is a square as wide as the slice's longer diagonal (far face or
+// body), whatever the view's orientation; stabilized, its centre is floored to whole texels of
+// width / mapSize; lightDepth puts the far plane that far behind the near one.
+TEST(LightFitTest, DiagonalFitIsTheLongerDiagonalSquareWithItsCentreFlooredToTexels) {
+    for (const CameraParams& cam : cameras())
+        for (const glm::vec3& dir : lightDirs()) {
+            FitParams p;
+            p.fit = FitMode::Diagonal;
+            p.stabilize = true;
+            p.mapSize = 2048;
+            p.zExtension = ZExtension::Distance;
+            p.zExtensionDistance = 199.0f;
+            p.lightDepth = 1999.0f;
+            const std::vector<float> s = splitsFor(cam, 3);
+            for (int i = 0; i < 3; ++i) {
+                const CascadeFit fit = fitCascade(cam, s, i, dir, p);
+                const Corners c = sliceCornersFromCamera(cam, s[std::size_t(i)], s[std::size_t(i) + 1]);
+                const float far = glm::distance(c[6], c[4]), body = glm::distance(c[6], c[0]);
+                const float width = std::max(far, body);
+                const glm::vec3 e = fit.lsBox.extent();
+                EXPECT_NEAR(e.x, width, 1e-4f * width);
+                EXPECT_NEAR(e.y, width, 1e-4f * width);
+                EXPECT_NEAR(e.z, 1999.0f, 1e-3f);
+                const double texel = double(width) / 2048.0;
+                const double cx = 0.5 * (double(fit.lsBox.min.x) + double(fit.lsBox.max.x));
+                EXPECT_NEAR(cx / texel, std::round(cx / texel), 2e-2) << "centre on the texel grid";
+                // The slice's own box (unsnapped) starts at most a texel left of the snapped centre.
+                const Aabb slice = fitCascade(cam, s, i, dir, FitParams{.fit = FitMode::Cascade, .zExtension = ZExtension::None, .mapSize = 2048}).lsBox;
+                const double sliceCentre = 0.5 * (double(slice.min.x) + double(slice.max.x));
+                EXPECT_GE(sliceCentre - cx, -1e-3 * texel);
+                EXPECT_LT(sliceCentre - cx, texel * 1.001);
+                EXPECT_NEAR(fit.lsBox.max.z, slice.max.z + 199.0f, 1e-2f);
+                expectCornersInside(fit, cam, "diagonal");
+            }
+        }
+}
+
+}  // namespace
+}  // namespace st::csm

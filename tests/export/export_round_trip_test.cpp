@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace st::xport {
@@ -16,11 +18,14 @@ EngineExport exported(const std::string& engine) {
     return exportSettings(s, *parseEngine(engine));
 }
 
-const nlohmann::json& value(const EngineExport& e, const std::string& name) {
-    const ExportItem* item = e.find(name);
-    if (!item) throw std::runtime_error("no export item " + name);
-    return item->value;
+// An item the export must have: a missing one fails the test (an exception) instead of crashing it.
+const ExportItem& item(const EngineExport& e, const std::string& name) {
+    const ExportItem* found = e.find(name);
+    if (!found) throw std::runtime_error("no export item " + name);
+    return *found;
 }
+
+const nlohmann::json& value(const EngineExport& e, const std::string& name) { return item(e, name).value; }
 
 double number(const EngineExport& e, const std::string& name) { return value(e, name).get<double>(); }
 
@@ -35,7 +40,10 @@ TEST(ExportRoundTripTest, GodotGivesItsDefaultsBack) {
     EXPECT_DOUBLE_EQ(number(e, "directional_shadow_pancake_size"), 20.0);
     EXPECT_NEAR(number(e, "directional_shadow_fade_start"), 0.8, 1e-4);
     EXPECT_EQ(value(e, "directional_shadow_blend_splits"), false);
+    // shadow_bias / 100 x (2 r + pancake) x shadow_blur 1 x the soft-low quality radius 2 (light_storage.cpp
+    // update_light_buffers; renderer_scene_render_rd.cpp directional_soft_shadow_filter_set_quality).
     EXPECT_NEAR(number(e, "shadow_bias"), 0.1, 1e-3);
+    EXPECT_DOUBLE_EQ(number(e, "shadow_blur"), 1.0);
     EXPECT_DOUBLE_EQ(number(e, "shadow_normal_bias"), 2.0);
     // doc/classes/ProjectSettings.xml: directional_shadow/size 4096, soft_shadow_filter_quality 2.
     EXPECT_EQ(value(e, "rendering/lights_and_shadows/directional_shadow/size"), 4096);
@@ -54,6 +62,10 @@ TEST(ExportRoundTripTest, UnityGivesItsDefaultsBack) {
     EXPECT_DOUBLE_EQ(number(e, "shadowNormalBias"), 1.0);
     EXPECT_EQ(value(e, "supportsSoftShadows"), false);
     EXPECT_NEAR(number(e, "cascadeBorder"), 0.2, 1e-4);
+    // ShadowUtils.RenderShadowSlice: SetGlobalDepthBias(1, 2.5) on every caster, no asset setting.
+    EXPECT_DOUBLE_EQ(number(e, "(slope bias)"), 2.5);
+    EXPECT_EQ(item(e, "(slope bias)").mapping, Mapping::Approximated);
+    EXPECT_EQ(item(e, "(cascade selection)").mapping, Mapping::Exact);  // one cascade
 }
 
 TEST(ExportRoundTripTest, UnrealGivesItsDefaultsBack) {
@@ -62,24 +74,28 @@ TEST(ExportRoundTripTest, UnrealGivesItsDefaultsBack) {
     EXPECT_EQ(value(e, "DynamicShadowCascades"), 3);
     EXPECT_DOUBLE_EQ(number(e, "DynamicShadowDistanceMovableLight"), 20000.0);
     EXPECT_NEAR(number(e, "CascadeDistributionExponent"), 3.0, 1e-3);
-    EXPECT_EQ(e.find("CascadeDistributionExponent")->mapping, Mapping::Exact);  // splits reproduced within 1 cm
+    EXPECT_EQ(item(e, "CascadeDistributionExponent").mapping, Mapping::Exact);  // splits reproduced within 1 cm
     EXPECT_DOUBLE_EQ(number(e, "CascadeTransitionFraction"), 0.1);
     EXPECT_NEAR(number(e, "ShadowDistanceFadeoutFraction"), 0.1, 1e-4);
     EXPECT_EQ(value(e, "r.Shadow.MaxCSMResolution"), 2048);
-    // LightComponent.cpp: ShadowBias 0.5, ShadowSlopeBias 0.5.
+    // LightComponent.cpp: ShadowBias 0.5, ShadowSlopeBias 0.5; ShadowRendering.cpp UpdateShaderDepthBias: the
+    // slope bias is the constant one x r.Shadow.CSMSlopeScaleDepthBias 3 x ShadowSlopeBias (3.75 texels x tan).
     EXPECT_NEAR(number(e, "ShadowBias"), 0.5, 1e-3);
-    EXPECT_DOUBLE_EQ(number(e, "ShadowSlopeBias"), 0.5);
+    EXPECT_NEAR(number(e, "ShadowSlopeBias"), 0.5, 1e-3);
+    EXPECT_DOUBLE_EQ(number(e, "r.Shadow.ShadowMaxSlopeScaleDepthBias"), 1.0);
+    EXPECT_DOUBLE_EQ(number(e, "r.Shadow.CSMReceiverBias"), 0.9);
 }
 
 TEST(ExportRoundTripTest, BevyGivesItsDefaultsBack) {
     const EngineExport e = exported("bevy");
-    // bevyengine/bevy crates/bevy_light/src/cascade.rs, CascadeShadowConfigBuilder::default.
-    EXPECT_EQ(value(e, "CascadeShadowConfigBuilder.num_cascades"), 4);
-    EXPECT_NEAR(number(e, "CascadeShadowConfigBuilder.minimum_distance"), 0.1, 1e-6);
-    EXPECT_DOUBLE_EQ(number(e, "CascadeShadowConfigBuilder.maximum_distance"), 150.0);
-    EXPECT_DOUBLE_EQ(number(e, "CascadeShadowConfigBuilder.first_cascade_far_bound"), 10.0);
-    EXPECT_EQ(e.find("CascadeShadowConfigBuilder.first_cascade_far_bound")->mapping, Mapping::Exact);
-    EXPECT_NEAR(number(e, "CascadeShadowConfigBuilder.overlap_proportion"), 0.2, 1e-5);
+    // bevyengine/bevy crates/bevy_light/src/cascade.rs, CascadeShadowConfigBuilder::default built into a
+    // CascadeShadowConfig: bounds 10 x 15^(i/3) for i = 0..3 (calculate_cascade_bounds), minimum 0.1, overlap 0.2.
+    const nlohmann::json& bounds = value(e, "CascadeShadowConfig.bounds");
+    ASSERT_EQ(bounds.size(), 4u);
+    for (size_t i = 0; i < 4; ++i) EXPECT_NEAR(bounds[i].get<double>(), 10.0 * std::pow(15.0, double(i) / 3.0), 1e-3) << i;
+    EXPECT_EQ(item(e, "CascadeShadowConfig.bounds").mapping, Mapping::Exact);
+    EXPECT_NEAR(number(e, "CascadeShadowConfig.minimum_distance"), 0.1, 1e-6);
+    EXPECT_NEAR(number(e, "CascadeShadowConfig.overlap_proportion"), 0.2, 1e-5);
     // crates/bevy_light/src/directional_light.rs: DirectionalLightShadowMap 2048, biases 0.02 / 1.8.
     EXPECT_EQ(value(e, "DirectionalLightShadowMap.size"), 2048);
     EXPECT_DOUBLE_EQ(number(e, "DirectionalLight.shadow_depth_bias"), 0.02);
@@ -108,7 +124,7 @@ TEST(ExportRoundTripTest, FilamentGivesItsDefaultsBack) {
     EXPECT_DOUBLE_EQ(number(e, "shadowFar"), 0.0);
     EXPECT_EQ(value(e, "stable"), false);
     EXPECT_DOUBLE_EQ(number(e, "constantBias"), 0.001);
-    EXPECT_DOUBLE_EQ(number(e, "normalBias"), 1.0);
+    EXPECT_DOUBLE_EQ(number(e, "normalBias"), 1.0);  // ShadowMapManager.cpp: x half a texel (normalOffset 0.5)
     EXPECT_DOUBLE_EQ(number(e, "polygonOffsetSlope"), 2.0);
 }
 

@@ -58,7 +58,9 @@ TEST(KindDescriptorsTest, FilterParametersApplyToTheKindsWhoseShaderReadsThem) {
         {"filter.evsmNegative", {F::Evsm4}},
         {"filter.momentBias", {F::Msm}},
         {"filter.blockerTaps", {F::Pcss}},
-        {"bias.receiverPlane", {F::Hard, F::Pcf2x2, F::PcfNxN, F::Pcss}}};
+        {"bias.receiverPlane", {F::Hard, F::Pcf2x2, F::PcfNxN, F::Pcss, F::Vogel}},
+        {"filter.vogelTaps", {F::Vogel}},
+        {"filter.radius", {F::Vogel}}};
     Settings s;
     for (const auto& [path, kinds] : uses)
         for (int k = 0; k < ST_FILTER_COUNT; ++k) {
@@ -68,7 +70,7 @@ TEST(KindDescriptorsTest, FilterParametersApplyToTheKindsWhoseShaderReadsThem) {
         }
     s.filter.kind = F::Vsm;
     EXPECT_EQ(notApplicableReason(s, "bias.receiverPlane"),
-              "Used with filter.kind hard, pcf2x2, pcf-nxn and pcss only (now vsm).");
+              "Used with filter.kind hard, pcf2x2, pcf-nxn, pcss and pcf-vogel only (now vsm).");
 }
 
 TEST(KindDescriptorsTest, NumericRulesElementPathsAndUnknownPaths) {

@@ -108,7 +108,7 @@ TEST(SettingsJsonTest, BoolStringAndEnumTypes) {
                            "cascades.stabilize: expected true or false, got 1"));
     EXPECT_TRUE(hasMessage(readErrors(preset({{"notes", 42}})), "notes: expected a string, got 42"));
     EXPECT_TRUE(hasMessage(readErrors(preset({{"cascades", {{"fit", "tight"}}}})),
-                           "presets/bad.json: cascades.fit: must be one of \"cascade\", \"scene\", \"sphere\", \"samples\", got "
+                           "presets/bad.json: cascades.fit: must be one of \"cascade\", \"scene\", \"sphere\", \"samples\", \"diagonal\", got "
                            "string \"tight\""));
     EXPECT_TRUE(hasMessage(readErrors(preset({{"filter", {{"kind", 2}}}})), "filter.kind: must be one of"));
 }

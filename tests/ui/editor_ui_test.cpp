@@ -187,7 +187,7 @@ TEST_F(EditorUiTest, ANegativeFilterSizeTypedIntoItsBoxIsRefused) {
     d.s.filter.kind = FilterKind::PcfNxN;
     d.s.filter.size = 5;
     d.frame();
-    d.scroll(d.rect("light.elevation").center(), -10.0f);  // the Filter group is below the fold
+    d.scroll(d.rect("light.elevation").center(), -13.0f);  // the Filter group is below the fold
     ASSERT_LT(d.rect("filter.size").max.y, 700.0f);
     d.click("filter.size");
     d.pressKey(65, true);  // Ctrl+A

@@ -158,7 +158,7 @@ TEST(FieldRulesTest, FilterStorageAndViewFieldsApplyToTheirModesOnly) {
         {"filter.momentBias", {FilterKind::Msm}},
         {"filter.pcssMaxRadius", {FilterKind::Pcss}},
         {"filter.padding", {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN, FilterKind::Vsm, FilterKind::Evsm2,
-                            FilterKind::Evsm4, FilterKind::Msm, FilterKind::Pcss}}};
+                            FilterKind::Evsm4, FilterKind::Msm, FilterKind::Pcss, FilterKind::Vogel}}};
     for (const auto& [path, kinds] : uses)
         for (int k = 0; k < ST_FILTER_COUNT; ++k) {
             s.filter.kind = FilterKind(k);

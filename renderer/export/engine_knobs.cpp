@@ -1,0 +1,70 @@
+#include "renderer/export/engine_knobs.h"
+
+#include "renderer/csm/cascade_plan.h"
+#include "renderer/export/engine_knobs_detail.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace st::xport {
+
+std::optional<WebEngine> parseWebEngine(const std::string& name) {
+    if (name == "threejs" || name == "three.js" || name == "three") return WebEngine::Threejs;
+    if (name == "babylon" || name == "babylonjs" || name == "babylon.js") return WebEngine::Babylon;
+    return std::nullopt;
+}
+
+std::string webEngineName(WebEngine e) { return e == WebEngine::Threejs ? "threejs" : "babylon"; }
+
+std::string webEngineList() { return "threejs, babylon"; }
+
+nlohmann::json withDefaults(const nlohmann::json& defaults, const nlohmann::json& given) {
+    nlohmann::json out = defaults;
+    if (given.is_null()) return out;
+    if (!given.is_object()) throw std::invalid_argument("settings: expected an object of the engine's knobs");
+    for (auto it = given.begin(); it != given.end(); ++it) {
+        if (!defaults.contains(it.key())) throw std::invalid_argument("settings." + it.key() + ": the engine has no such knob");
+        out[it.key()] = it.value();
+    }
+    return out;
+}
+
+float knobFloat(const nlohmann::json& knobs, const char* name, double lo, double hi) {
+    const nlohmann::json& v = knobs.at(name);
+    if (!v.is_number()) throw std::invalid_argument(std::string("settings.") + name + ": expected a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || d < lo || d > hi)
+        throw std::invalid_argument(std::string("settings.") + name + ": " + v.dump() + " is outside " +
+                                    nlohmann::json(lo).dump() + " .. " + nlohmann::json(hi).dump());
+    return static_cast<float>(d);
+}
+
+int knobInt(const nlohmann::json& knobs, const char* name, int lo, int hi) {
+    const nlohmann::json& v = knobs.at(name);
+    if (!v.is_number_integer()) throw std::invalid_argument(std::string("settings.") + name + ": expected a whole number");
+    const long long n = v.get<long long>();
+    if (n < lo || n > hi)
+        throw std::invalid_argument(std::string("settings.") + name + ": " + std::to_string(n) + " is outside " +
+                                    std::to_string(lo) + " .. " + std::to_string(hi));
+    return static_cast<int>(n);
+}
+
+std::vector<float> presetSplits(const Settings& s) { return csm::planSplits(s, std::nullopt); }
+
+nlohmann::json defaultKnobs(WebEngine e) {
+    return e == WebEngine::Threejs ? threejsDefaultKnobs() : babylonDefaultKnobs();
+}
+
+EngineKnobs knobsFor(WebEngine e, const Settings& s) {
+    return e == WebEngine::Threejs ? threejsKnobsFor(s) : babylonKnobsFor(s);
+}
+
+Settings engineModel(WebEngine e, const nlohmann::json& knobs, const Settings& view) {
+    try {
+        return e == WebEngine::Threejs ? threejsModel(knobs, view) : babylonModel(knobs, view);
+    } catch (const nlohmann::json::exception& ex) {
+        throw std::invalid_argument(std::string("settings: ") + ex.what());
+    }
+}
+
+}  // namespace st::xport

@@ -1,0 +1,33 @@
+#pragma once
+// What the engine knob tables share (engine_knobs_*.cpp): reading a knob with its range checked,
+// and the split depths a preset renders with.
+#include "renderer/export/engine_knobs.h"
+#include "renderer/settings/enum_names.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace st::xport {
+
+// `defaults` with every key of `given` put over it; throws std::invalid_argument on a key the
+// engine does not have (a typo must not fall back to a default silently).
+nlohmann::json withDefaults(const nlohmann::json& defaults, const nlohmann::json& given);
+// knobs[name] as a number in [lo, hi]; throws std::invalid_argument "settings.NAME: ...".
+float knobFloat(const nlohmann::json& knobs, const char* name, double lo, double hi);
+int knobInt(const nlohmann::json& knobs, const char* name, int lo, int hi);
+// The count + 1 view depths the preset's cascades span (renderer/csm/cascade_plan.h, no samples).
+std::vector<float> presetSplits(const Settings& s);
+
+nlohmann::json threejsDefaultKnobs();
+Settings threejsModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs threejsKnobsFor(const Settings& s);
+
+}  // namespace st::xport
+
+namespace st::xport {
+nlohmann::json babylonDefaultKnobs();
+Settings babylonModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs babylonKnobsFor(const Settings& s);
+}  // namespace st::xport

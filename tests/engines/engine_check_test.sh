@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# engine-check end to end on the yard at 320x180 (docs/engines.md): the real three.js in headless
+# Chromium against shadowtune's model of the same knobs.
+#   1. three.js's defaults: the engine and the model agree on >= 98 % of the scored pixels and their
+#      misclassified shares are within 0.3 percentage points;
+#   2. the same with the model's caster faces wrong (both instead of three.js's back faces): the
+#      agreement falls below the bar, so the check can fail;
+#   3. usage errors exit 2 with a message and write nothing: an unknown knob, a missing engines folder.
+# Usage: engine_check_test.sh SHADOWTUNE PRESETS_DIR
+set -euo pipefail
+st=$1
+presets=$2
+work=$(mktemp -d "${TMPDIR:-/tmp}/shadowtune-engine-check.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+fail() {
+  echo "engine_check_test: FAIL: $*" >&2
+  exit 1
+}
+
+figure() { jq -r "$1" "$2/figures.json"; }
+
+# check ENGINE OUT [extra args]: runs engine-check on the yard with the engine's defaults.
+check() {
+  local engine=$1 out=$2
+  shift 2
+  "$st" engine-check "$presets/default.json" --engine "$engine" --defaults --size 320x180 --out "$out" "$@" ||
+    fail "engine-check $engine exited $? ($(tail -3 "$out/engine.log" 2>/dev/null))"
+  for f in engine.png model.png truth.png disagreement.png figures.json model.json job.json; do
+    [[ -s $out/$f ]] || fail "$engine: $f missing"
+  done
+}
+
+for engine in threejs; do
+  check "$engine" "$work/$engine"
+  agree=$(figure .agreement "$work/$engine")
+  me=$(figure '.engine.figures."accuracy.misclassified"' "$work/$engine")
+  mm=$(figure '.model.figures."accuracy.misclassified"' "$work/$engine")
+  scored=$(figure .scoredPixels "$work/$engine")
+  echo "$engine defaults on the yard: agreement $agree over $scored px, misclassified engine $me model $mm"
+  (( scored > 30000 )) || fail "$engine: only $scored scored pixels"
+  [[ $(echo "$agree >= 0.98" | bc -l) == 1 ]] || fail "$engine: agreement $agree < 0.98"
+  diff=$(echo "d = $me - $mm; if (d < 0) d = -d; d" | bc -l)
+  [[ $(echo "$diff <= 0.003" | bc -l) == 1 ]] || fail "$engine: misclassified differ by $diff (> 0.3 pp)"
+done
+
+check threejs "$work/wrong" --model-set 'cascades.casterFaces="both"'
+wrong=$(figure .agreement "$work/wrong")
+echo "three.js defaults against a model drawing both faces: agreement $wrong"
+[[ $(echo "$wrong < 0.98" | bc -l) == 1 ]] || fail "a model with the wrong caster faces still agrees ($wrong)"
+
+set +e
+"$st" engine-check "$presets/default.json" --engine threejs --knobs <(echo '{"cascade": 3}') --out "$work/bad" 2>"$work/err"
+code=$?
+set -e
+[[ $code == 2 ]] || fail "an unknown knob exited $code, not 2"
+grep -q "settings.cascade: the engine has no such knob" "$work/err" || fail "unknown knob: $(cat "$work/err")"
+[[ ! -e $work/bad ]] || fail "an unknown knob left $work/bad behind"
+set +e
+"$st" engine-check "$presets/default.json" --engine threejs --engines-dir "$work/none" --out "$work/bad" 2>"$work/err"
+code=$?
+set -e
+[[ $code == 2 ]] || fail "a missing engines folder exited $code, not 2"
+grep -q "run.mjs is missing" "$work/err" || fail "missing engines folder: $(cat "$work/err")"
+echo "engine_check_test: ok"
