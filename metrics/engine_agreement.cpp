@@ -7,7 +7,7 @@
 namespace st::metrics {
 namespace {
 
-void score(FactorScore& s, float factor, bool truthLit, float soft) {
+void scoreFactor(FactorScore& s, float factor, bool truthLit, float soft) {
     const bool lit = factor >= 0.5f;
     s.falseShadow += !lit && truthLit;
     s.falseLight += lit && !truthLit;
@@ -35,8 +35,8 @@ EngineAgreement compareWithEngine(const std::vector<glm::vec4>& engine, const Me
         ++a.scored;
         const float fe = engine[i].x, fm = model.shadow[i].y;
         const bool litE = fe >= 0.5f, litM = fm >= 0.5f;
-        score(a.engine, fe, truth[i] != 0, soft[i]);
-        score(a.model, fm, truth[i] != 0, soft[i]);
+        scoreFactor(a.engine, fe, truth[i] != 0, soft[i]);
+        scoreFactor(a.model, fm, truth[i] != 0, soft[i]);
         AgreementClass c;
         if (litE == litM) {
             ++a.agree;

@@ -49,13 +49,25 @@
 #define ST_FILTER_MSM 6
 #define ST_FILTER_PCSS 7   /* percentage-closer soft shadows: blocker search, then PCF */
 #define ST_FILTER_VOGEL 8  /* bilinear compares on a Vogel disc rotated per pixel (three.js r182+) */
-#define ST_FILTER_COUNT 9
+#define ST_FILTER_TENT 9   /* a tent-weighted NxN kernel from bilinear compares (Castano 2013; Babylon.js PCF3/PCF5) */
+#define ST_FILTER_COUNT 10
 
 // CasterFaces: which faces of single-sided materials the shadow pass draws (double-sided: both)
 #define ST_FACES_BOTH 0
 #define ST_FACES_BACK 1
 #define ST_FACES_FRONT 2
 #define ST_FACES_COUNT 3
+
+// Snap: how a stabilized light box moves onto the texel grid
+#define ST_SNAP_BOX_FLOOR 0     /* its min corner floored, the texel size / (m - 1) (seed 001) */
+#define ST_SNAP_CENTRE_FLOOR 1  /* its centre floored to texels of size / m (three.js CSM) */
+#define ST_SNAP_CENTRE_ROUND 2  /* its centre rounded to texels of size / m (Babylon.js CSM) */
+#define ST_SNAP_COUNT 3
+
+// BiasUnit: what bias.constant counts
+#define ST_BIASUNIT_METRES 0
+#define ST_BIASUNIT_DEPTH 1     /* the light box's normalised depth (its near..far plane as 0..1) */
+#define ST_BIASUNIT_COUNT 2
 
 // OffsetUnit: what bias.normalOffset counts
 #define ST_OFFSET_TEXELS 0

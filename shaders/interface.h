@@ -122,7 +122,7 @@
     M(int, normalOffsetUnit) /* ST_OFFSET_*: normalOffset in texels or metres */                 \
     M(int, vogelTaps)      /* taps of the Vogel-disc filter */                                    \
     M(float, filterRadius) /* Vogel-disc filter: radius in texels */                              \
-    M(int, cascadePad2)                                                                           \
+    M(int, biasUnit)       /* ST_BIASUNIT_*: biasConstant in metres or the box's normalised depth */ \
     M(int, cascadePad3)                                                                           \
     M(int, cascadePad4)                                                                           \
     A(vec4, pcfWeights, 3) /* 1-D tap weights of the NxN filter, [k/4][k%4] for tap k - size/2 */ \

@@ -59,6 +59,7 @@ vec2 edgeMargin(int i) {
     if (filterKind == ST_FILTER_PCF_NXN) radius = float(filterSize / 2) + 1.0;
     else if (filterKind == ST_FILTER_PCSS) radius = ceil(pcssMaxRadius) + 1.0;
     else if (filterKind == ST_FILTER_VOGEL) radius = ceil(filterRadius) + 1.0;
+    else if (filterKind == ST_FILTER_TENT) radius = float(filterSize / 2) + 1.0;
     else if (filterKind >= ST_FILTER_VSM && filterKind <= ST_FILTER_MSM) radius = float(blurRadius) + 1.0;
     return radius * cascade[i].uvPerTexel.xy;
 }
@@ -143,7 +144,8 @@ float tanToLight(float nDotL) {
 // turned from metres into cascade i's depth units.
 float biasedDepth(int i, float tsZ, float tanTheta) {
     vec4 k = cascade[i].biasScale;
-    float biasMetres = biasConstant * k.x + biasSlope * k.y * cascade[i].texelWorld * tanTheta;
+    float constantMetres = biasUnit == ST_BIASUNIT_DEPTH ? biasConstant * cascade[i].depthRange : biasConstant;
+    float biasMetres = constantMetres * k.x + biasSlope * k.y * cascade[i].texelWorld * tanTheta;
     return min(tsZ - biasMetres / cascade[i].depthRange, 1.0);
 }
 
@@ -234,6 +236,32 @@ float pcfVogel(int i, vec2 uv, float z, vec2 dzduv) {
     return sum / float(vogelTaps);
 }
 
+// Castano 2013 ("Shadow Mapping Summary, Part 1", The Witness), as Babylon.js 9.28 ships it
+// (Shaders/ShadersInclude/shadowsFragmentFunctions.js computeShadowWithPCF3/5): a 3x3 or 5x5
+// tent-weighted kernel from 4 or 9 hardware-bilinear compares whose offsets and weights put each
+// tap's bilinear weights onto the tent. Texels are cascade i's own texture's.
+float pcfTent(int i, vec2 uv, float z, vec2 dzduv) {
+    vec2 t = cascade[i].uvPerTexel.xy;
+    vec2 q = uv / t + 0.5;
+    vec2 st = fract(q);
+    vec2 base = (floor(q) - 0.5) * t;
+    float sum = 0.0;
+    if (filterSize <= 3) {
+        vec2 w[2] = vec2[2](3.0 - 2.0 * st, 1.0 + 2.0 * st);
+        vec2 o[2] = vec2[2]((2.0 - st) / w[0] - 1.0, st / w[1] + 1.0);
+        for (int b = 0; b < 2; ++b)
+            for (int a = 0; a < 2; ++a)
+                sum += w[a].x * w[b].y * bilinearTap(i, base + vec2(o[a].x, o[b].y) * t, uv, z, dzduv);
+        return sum / 16.0;
+    }
+    vec2 w[3] = vec2[3](4.0 - 3.0 * st, vec2(7.0), 1.0 + 3.0 * st);
+    vec2 o[3] = vec2[3]((3.0 - 2.0 * st) / w[0] - 2.0, (3.0 + st) / 7.0, st / w[2] + 2.0);
+    for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a)
+            sum += w[a].x * w[b].y * bilinearTap(i, base + vec2(o[a].x, o[b].y) * t, uv, z, dzduv);
+    return sum / 144.0;
+}
+
 // A moment filter's lit share from the filtered moments of cascade i. The footprint comes from
 // the world-position derivatives (textureGrad): implicit ones are undefined in this branch.
 float momentShadow(int i, vec2 uv, float z, vec3 wsDx, vec3 wsDy) {
@@ -317,6 +345,7 @@ float sampleCascade(int i, vec3 ts, vec3 wsDx, vec3 wsDy, float tanTheta) {
     if (filterKind == ST_FILTER_PCF2X2) return pcf2x2(i, ts.xy, z, dzduv);
     if (filterKind == ST_FILTER_PCSS) return pcss(i, ts.xy, z, dzduv);
     if (filterKind == ST_FILTER_VOGEL) return pcfVogel(i, ts.xy, z, dzduv);
+    if (filterKind == ST_FILTER_TENT) return pcfTent(i, ts.xy, z, dzduv);
     return pcfNxN(i, ts.xy, z, dzduv);
 }
 

@@ -15,7 +15,7 @@ struct EngineCheckArgs {
     std::string engine, size;
 };
 
-int run(EngineCheckArgs& a) {
+int runArgs(EngineCheckArgs& a) {
     const auto engine = xport::parseWebEngine(a.engine);
     if (!engine) {
         std::fprintf(stderr, "error: --engine: '%s' is not one of %s\n", a.engine.c_str(), xport::webEngineList().c_str());
@@ -56,7 +56,7 @@ void addEngineCheckCommand(CLI::App& cli, int& exitCode) {
                     "PATH=JSON: change one field of shadowtune's model (e.g. cascades.casterFaces=\"both\"), to see how far "
                     "the agreement falls when the model is wrong");
     cmd->add_flag("--debug-context,!--no-debug-context", args->opt.debugContext, "KHR_debug context");
-    cmd->callback([args, &exitCode] { exitCode = run(*args); });
+    cmd->callback([args, &exitCode] { exitCode = runArgs(*args); });
 }
 
 }  // namespace st::app

@@ -22,7 +22,7 @@ constexpr Colour kNone{24, 32, 56}, kAway{70, 70, 70};
 constexpr Colour kAgreeLit{235, 235, 235}, kAgreeShadow{110, 110, 110};
 constexpr Colour kEngineOnly{220, 40, 40}, kModelOnly{40, 110, 230};
 
-void put(Rgba8Image& img, std::size_t i, Colour c) {
+void putColour(Rgba8Image& img, std::size_t i, Colour c) {
     for (int k = 0; k < 3; ++k) img.pixels[4 * i + std::size_t(k)] = c[std::size_t(k)];
     img.pixels[4 * i + 3] = 255;
 }
@@ -35,11 +35,11 @@ Rgba8Image blankOf(const MeasureSamples& s) {
 Rgba8Image factorImage(const MeasureSamples& s, const std::vector<float>& factor, const std::vector<float>& coverage) {
     Rgba8Image img = blankOf(s);
     for (std::size_t i = 0; i < s.size(); ++i) {
-        if (coverage[i] <= 0.5f) put(img, i, kNone);
-        else if (!s.receiver(i)) put(img, i, kAway);
+        if (coverage[i] <= 0.5f) putColour(img, i, kNone);
+        else if (!s.receiver(i)) putColour(img, i, kAway);
         else {
             const auto g = std::uint8_t(40.0f + 210.0f * std::clamp(factor[i], 0.0f, 1.0f));
-            put(img, i, {g, g, g});
+            putColour(img, i, {g, g, g});
         }
     }
     return img;
@@ -49,11 +49,11 @@ Rgba8Image disagreementImage(const MeasureSamples& s, const std::vector<metrics:
     Rgba8Image img = blankOf(s);
     for (std::size_t i = 0; i < s.size(); ++i) {
         switch (classes[i]) {
-            case metrics::AgreementClass::AgreeLit: put(img, i, kAgreeLit); break;
-            case metrics::AgreementClass::AgreeShadow: put(img, i, kAgreeShadow); break;
-            case metrics::AgreementClass::EngineOnlyShadow: put(img, i, kEngineOnly); break;
-            case metrics::AgreementClass::ModelOnlyShadow: put(img, i, kModelOnly); break;
-            default: put(img, i, s.covered(i) ? kAway : kNone); break;
+            case metrics::AgreementClass::AgreeLit: putColour(img, i, kAgreeLit); break;
+            case metrics::AgreementClass::AgreeShadow: putColour(img, i, kAgreeShadow); break;
+            case metrics::AgreementClass::EngineOnlyShadow: putColour(img, i, kEngineOnly); break;
+            case metrics::AgreementClass::ModelOnlyShadow: putColour(img, i, kModelOnly); break;
+            default: putColour(img, i, s.covered(i) ? kAway : kNone); break;
         }
     }
     return img;
@@ -117,7 +117,7 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
     std::printf("%-22s %14s %14s\n", "", (name + " " + version).c_str(), "shadowtune");
     std::printf("%-22s %13.3f%% %13.3f%%\n", "misclassified", 100.0 * a.misclassified(a.engine), 100.0 * a.misclassified(a.model));
     std::printf("%-22s %14.4f %14.4f\n", "filtered error", a.filteredError(a.engine), a.filteredError(a.model));
-    std::printf("agreement %s of %zu scored pixels (%dx%d), %zu receivers the engine did not draw; %.1f s -> %s\n", pct,
+    std::printf("agreement %s of %zu scored pixels (%dx%d), %zu receiver pixels the engine did not draw; %.1f s -> %s\n", pct,
                 a.scored, s.width, s.height, a.engineMissing, seconds, opt.outDir.string().c_str());
     return 0;
 }

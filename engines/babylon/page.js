@@ -344,7 +344,7 @@ async function render(job) {
     for (const key of ['gltf', 'extra']) {
       const url = job.scene?.[key];
       if (!url) continue;
-      await withDeadline(B.ImportMeshAsync(url, scene, { pluginExtension: extOf(url) }), deadline, `loading ${url}`, []);
+      await withDeadline(B.ImportMeshAsync(url, scene, { pluginExtension: extOf(url), pluginOptions: { gltf: { animationStartMode: 0 } } }), deadline, `loading ${url}`, []);
     }
     const tLoad1 = performance.now();
     for (const m of scene.meshes) m.computeWorldMatrix(true); // world boxes current before anything reads them

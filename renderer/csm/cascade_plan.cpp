@@ -62,9 +62,11 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     FitParams fp;
     fp.fit = cs.fit;
     fp.stabilize = cs.stabilize;
+    fp.snap = cs.snap;
     fp.zExtension = cs.zExtension;
     fp.zExtensionDistance = cs.zExtensionDistance;
     fp.lightDepth = cs.lightDepth;
+    fp.pancakeToCasters = cs.pancakeToCasters;
     fp.padTexels = s.filter.padding ? filterPaddingTexels(s.filter) : 0;
     fp.wsSceneBounds = wsSceneBounds;
     fp.minFovY = glm::radians(cs.fitFovY);

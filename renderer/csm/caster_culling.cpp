@@ -38,7 +38,7 @@ CasterVolume casterVolume(const Settings& s, const CameraParams& cam, std::span<
     // How far off the receiver's own x,y a pixel's taps reach (shadow_sampling.glsl): the NxN
     // kernel's radius, one texel of the 2x2 comparison, the normal offset; plus one texel spare
     // for float rounding. The texel is the map's: fit.texelWorldSize.
-    const float taps = s.filter.kind == FilterKind::PcfNxN  ? float(s.filter.size / 2)
+    const float taps = s.filter.kind == FilterKind::PcfNxN || s.filter.kind == FilterKind::Tent ? float(s.filter.size / 2)
                        : s.filter.kind == FilterKind::Vogel ? std::ceil(s.filter.radius)
                                                             : 0.0f;
     const float rawOffset = cascadeBias(s.bias, index).normalOffset;

@@ -23,6 +23,10 @@ FilterTaps filterTapsPerFragment(const FilterSettings& f, bool receiverPlane) {
         case FilterKind::Pcf2x2: return {perBilinear, 4, kDepthBytes};
         case FilterKind::PcfNxN: return {n2 * perBilinear, 4 * n2, kDepthBytes};
         case FilterKind::Vogel: return {f.vogelTaps * perBilinear, 4 * f.vogelTaps, kDepthBytes};
+        case FilterKind::Tent: {
+            const int taps = f.size <= 3 ? 4 : 9;  // pcfTent in shadow_sampling.glsl
+            return {taps * perBilinear, 4 * taps, kDepthBytes};
+        }
         case FilterKind::Pcss: {
             const int blockers = f.blockerTaps * f.blockerTaps;  // raw reads, one texel each
             return {blockers + n2 * perBilinear, blockers + 4 * n2, kDepthBytes};

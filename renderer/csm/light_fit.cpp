@@ -102,15 +102,16 @@ SliceBox diagonalBox(const CameraParams& cam, float vsNear, float vsFar, const g
     return box;
 }
 
-// three.js's snap (CSM.js update()): the box's centre floored to whole texels of size / m, the
-// box kept at its size around it; with an even m its edges land on the same grid.
-Aabb snapCentreToTexels(Aabb box, glm::vec2 size, int mapSize, const std::optional<glm::dvec2>& phase) {
+// The box's centre onto whole texels of size / m, the box kept at its size around it; with an even
+// m its edges land on the same grid. Floored: three.js (CSM.js update()); rounded: Babylon.js,
+// whose origin shift (_computeMatrices) moves the centre to the nearest multiple of the texel.
+Aabb snapCentreToTexels(Aabb box, glm::vec2 size, int mapSize, const std::optional<glm::dvec2>& phase, bool round) {
     for (int axis = 0; axis < 2; ++axis) {
         const double texel = double(size[axis]) / double(mapSize);
         if (!(texel > 0.0)) continue;
         const double shift = phase ? (*phase)[axis] : 0.0;
         const double centre = 0.5 * (double(box.min[axis]) + double(box.max[axis])) + shift;
-        const double snapped = std::floor(centre / texel) * texel - shift;
+        const double snapped = (round ? std::round(centre / texel) : std::floor(centre / texel)) * texel - shift;
         box.min[axis] = static_cast<float>(snapped - 0.5 * double(size[axis]));
         box.max[axis] = static_cast<float>(snapped + 0.5 * double(size[axis]));
     }
@@ -214,6 +215,16 @@ Aabb extendZ(Aabb box, const glm::mat4& lsView, const FitParams& p) {
         box.min.z = std::min(box.min.z, lsScene.min.z);
         box.max.z = std::max(box.max.z, lsScene.max.z);
     }
+    // Babylon.js with depthClamp (cascadedShadowGenerator.pure.js _computeMatrices): the slice's depth
+    // range cut to the casters' light-space bounds where they lie inside it, at least 1 m deep;
+    // casters toward the sun are clamped onto the near plane as any pancake's.
+    if (p.zExtension == ZExtension::Pancake && p.pancakeToCasters) {
+        const Aabb casters = transformAabb(lsView, p.wsSceneBounds);
+        if (casters.max.z >= box.min.z) {
+            box.max.z = std::min(box.max.z, casters.max.z);
+            box.min.z = std::min(box.max.z - 1.0f, std::max(box.min.z, casters.min.z));
+        }
+    }
     // three.js's light camera spans lightNear..lightFar from a point lightMargin beyond the slice
     // (CSM.js update()): a fixed depth that sets what a normalised-depth bias means in metres.
     if (p.lightDepth > 0.0f) box.min.z = box.max.z - p.lightDepth;
@@ -268,7 +279,8 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     } else {
         box = padBox(box, p.padTexels, p.mapSize);
     }
-    if (p.stabilize && p.fit == FitMode::Diagonal) box.ls = snapCentreToTexels(box.ls, box.size, p.mapSize, frame.phase);
+    if (p.stabilize && p.snap != Snap::BoxFloor)
+        box.ls = snapCentreToTexels(box.ls, box.size, p.mapSize, frame.phase, p.snap == Snap::CentreRound);
     else if (p.stabilize) box.ls = snapToTexels(box.ls, box.size, p.mapSize, frame.phase);
     out.lsSlice = box.ls;
     const Aabb ls = extendZ(box.ls, out.lsView, p);

@@ -24,9 +24,11 @@ glm::mat4 lightViewMatrix(glm::vec3 wsLightDir);
 struct FitParams {
     FitMode fit = FitMode::Cascade;
     bool stabilize = false;           // snap the box's x,y origin to whole texels
+    Snap snap = Snap::BoxFloor;       // how (CascadeSettings::snap)
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 0.0f;  // metres toward the light, for ZExtension::Distance
     float lightDepth = 0.0f;          // metres from the box's near plane to its far one; 0 = the slice's far side
+    bool pancakeToCasters = false;    // Pancake: depth tightened to wsSceneBounds (CascadeSettings::pancakeToCasters)
     int mapSize = 1024;               // texels per side of this cascade's map
     int padTexels = 0;                // texels added on each x,y side so kernels stay in the map
     Aabb wsSceneBounds;               // all casters; used by SceneBounds

@@ -18,7 +18,7 @@ int selectCascadeInterval(std::span<const float> splits, float vsDepth) {
 }
 
 int filterReachTexels(FilterKind filter, int filterSize) {
-    return filter == FilterKind::PcfNxN ? filterSize / 2 + 1 : 1;
+    return filter == FilterKind::PcfNxN || filter == FilterKind::Tent ? filterSize / 2 + 1 : 1;
 }
 
 int filterPaddingTexels(const FilterSettings& f) {

@@ -1,5 +1,6 @@
 // Babylon.js 9.28's CascadedShadowGenerator (@babylonjs/core Lights/Shadows), as knobs and as
-// shadowtune settings. engines/babylon/NOTES.md cites the source lines of each behaviour.
+// shadowtune settings. engines/babylon/NOTES.md cites the source line of each behaviour; the
+// line numbers here are of cascadedShadowGenerator.pure.js (cSG) and shadowGenerator.js (SG).
 #include "renderer/export/engine_knobs_detail.h"
 
 #include <algorithm>
@@ -11,11 +12,32 @@ namespace {
 
 using nlohmann::json;
 
+// cSG:532-552 and SG:583-610; mapSize is the constructor's argument (1024 in Babylon's examples).
 json babylonDefaults() {
-    return {{"mapSize", 1024},          {"numCascades", 4},         {"lambda", 0.5},
+    return {{"mapSize", 1024},          {"numCascades", 4},           {"lambda", 0.5},
             {"shadowMaxZ", nullptr},    {"stabilizeCascades", false}, {"depthClamp", true},
-            {"cascadeBlendPercentage", 0.1}, {"bias", 0.00005},     {"normalBias", 0.0},
-            {"filter", "PCF"},          {"filteringQuality", "high"}};
+            {"cascadeBlendPercentage", 0.1}, {"bias", 0.00005},       {"normalBias", 0.0},
+            {"filter", "PCF"},          {"filteringQuality", "high"}, {"darkness", 0.0}};
+}
+
+FilterSettings filterOf(const json& k) {
+    FilterSettings f;
+    const std::string filter = k.at("filter").get<std::string>();
+    const std::string quality = k.at("filteringQuality").get<std::string>();
+    if (quality != "low" && quality != "medium" && quality != "high")
+        throw std::invalid_argument("settings.filteringQuality: '" + quality + "' is not low, medium or high");
+    if (filter == "none") {
+        f.kind = FilterKind::Hard;  // approximate: Babylon stores half-float depth for it (NOTES.md)
+    } else if (filter == "PCF") {
+        // SG:1370-1378: low one bilinear compare, medium PCF3 (4 taps), high PCF5 (9 taps).
+        f.kind = quality == "low" ? FilterKind::Pcf2x2 : FilterKind::Tent;
+        f.size = quality == "medium" ? 3 : 5;
+    } else if (filter == "PCSS") {
+        f.kind = FilterKind::Pcss;  // approximate: Babylon's blocker search and kernel differ
+    } else {
+        throw std::invalid_argument("settings.filter: '" + filter + "' is not PCF, PCSS or none");
+    }
+    return f;
 }
 
 }  // namespace
@@ -28,37 +50,42 @@ Settings babylonModel(const json& given, const Settings& view) {
     CascadeSettings& c = s.cascades;
     c = CascadeSettings{};
     c.count = knobInt(k, "numCascades", 2, 4);
-    c.scheme = SplitScheme::Practical;
+    c.scheme = SplitScheme::Practical;  // _splitFrustum (cSG:331-349): lambda between log and uniform
     c.lambda = knobFloat(k, "lambda", 0.0, 1.0);
-    if (!k.at("shadowMaxZ").is_null()) c.shadowDistance = std::min(knobFloat(k, "shadowMaxZ", 1e-3, 1e9), view.camera.farPlane);
-    c.mapSize = knobInt(k, "mapSize", 256, 8192);
-    c.stabilize = k.at("stabilizeCascades").get<bool>();
-    c.fit = c.stabilize ? FitMode::Sphere : FitMode::Cascade;
-    c.zExtension = k.at("depthClamp").get<bool>() ? ZExtension::Pancake : ZExtension::None;
-    c.blendBand = knobFloat(k, "cascadeBlendPercentage", 0.0, 0.5);
-    c.casterFaces = CasterFaces::Both;
-    FilterSettings& f = s.filter;
-    f = FilterSettings{};
-    const std::string filter = k.at("filter").get<std::string>();
-    const std::string quality = k.at("filteringQuality").get<std::string>();
-    if (filter == "none") {
-        f.kind = FilterKind::Hard;
-    } else if (filter == "PCF") {
-        if (quality == "low") f.kind = FilterKind::Pcf2x2;
-        else if (quality == "medium" || quality == "high") {
-            f.kind = FilterKind::PcfNxN;
-            f.size = quality == "medium" ? 3 : 5;
-        } else throw std::invalid_argument("settings.filteringQuality: '" + quality + "' is not low, medium or high");
-    } else {
-        throw std::invalid_argument("settings.filter: '" + filter + "' is not PCF or none");
+    if (!k.at("shadowMaxZ").is_null()) {
+        const float maxZ = knobFloat(k, "shadowMaxZ", 0.0, 1e9);
+        if (maxZ > view.camera.nearPlane && maxZ < view.camera.farPlane) c.shadowDistance = maxZ;  // else ignored (cSG:169)
     }
+    c.mapSize = knobInt(k, "mapSize", 256, 8192);
+    // _computeCascadeFrustum (cSG:460-496): the slice's tight light-space box, or a sphere of radius
+    // rounded up to 1/16 (approximate: Babylon centres it on the corners' mean); then the origin shift
+    // (cSG:406-419) rounds the box's centre to whole texels, in both modes.
+    c.fit = k.at("stabilizeCascades").get<bool>() ? FitMode::Sphere : FitMode::Cascade;
+    c.stabilize = true;
+    c.snap = Snap::CentreRound;
+    // cSG:371-405: with depthClamp the box starts at the slice and casters in front are clamped
+    // (pancaking); without it the box reaches the casters' bounds toward the sun.
+    const bool depthClamp = k.at("depthClamp").get<bool>();
+    c.zExtension = depthClamp ? ZExtension::Pancake : ZExtension::SceneBounds;
+    c.pancakeToCasters = depthClamp;
+    c.selection = Selection::Interval;  // lightFragment.js:224-231: the first split at or beyond the depth
+    c.blendBand = knobFloat(k, "cascadeBlendPercentage", 0.0, 0.5);
+    c.casterFaces = CasterFaces::Front;  // SG:914-927: single-sided triangles cast only facing the sun
+    s.filter = filterOf(k);
+    if (knobFloat(k, "darkness", 0.0, 1.0) > 0.0f)
+        throw std::invalid_argument("settings.darkness: shadowtune models darkness 0 only (a shadow's full strength)");
     BiasSettings& b = s.bias;
     b = BiasSettings{};
-    b.constant = 0.0f;  // set from the cascade's depth range below (normalised depth units)
+    // shadowMapFragment.js: the caster's stored depth gains 1.5 x bias with depth clamp (the bias in
+    // clip space and again in the fragment), 0.5 x without; receivers are not biased. For a constant
+    // depth the two sides are the same comparison.
+    b.constant = (depthClamp ? 1.5f : 0.5f) * knobFloat(k, "bias", -1.0, 1.0);
+    b.constantUnit = BiasUnit::Depth;
     b.slope = 0.0f;
+    // Babylon moves casters into their surface by normalBias x sin(theta) (shadowMapVertexNormalBias.js);
+    // approximated by moving receivers out as far (both widen the gap by the same metres on a plane).
     b.normalOffset = knobFloat(k, "normalBias", 0.0, 1e3);
     b.normalOffsetUnit = OffsetUnit::Metres;
-    (void)knobFloat(k, "bias", -1.0, 1.0);
     return s;
 }
 
@@ -69,20 +96,35 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     k["numCascades"] = std::clamp(c.count, 2, 4);
     if (c.count < 2 || c.count > 4) out.lacks.push_back(std::to_string(c.count) + " cascades: Babylon takes 2 to 4");
     if (c.scheme == SplitScheme::Practical) k["lambda"] = c.lambda;
-    else out.lacks.push_back("split scheme '" + enumName(c.scheme) + "': Babylon splits by lambda");
+    else if (c.scheme == SplitScheme::Uniform) k["lambda"] = 0.0;
+    else if (c.scheme == SplitScheme::Logarithmic) k["lambda"] = 1.0;
+    else out.lacks.push_back("manual splits: Babylon splits by lambda");
     if (c.shadowDistance > 0.0f) k["shadowMaxZ"] = c.shadowDistance;
     k["mapSize"] = c.mapSize;
     k["stabilizeCascades"] = c.fit == FitMode::Sphere;
-    k["depthClamp"] = c.zExtension == ZExtension::Pancake;
+    if (c.fit != FitMode::Sphere && c.fit != FitMode::Cascade)
+        out.lacks.push_back("fit '" + enumName(c.fit) + "': Babylon fits the slice's box or a sphere");
+    if (!c.stabilize || c.snap != Snap::CentreRound) out.lacks.push_back("a box not centre-rounded to texels: Babylon always rounds");
+    const bool depthClamp = c.zExtension == ZExtension::Pancake;
+    k["depthClamp"] = depthClamp;
+    if (depthClamp && !c.pancakeToCasters) out.lacks.push_back("a pancake over the whole slice: Babylon cuts it to the casters' bounds");
+    if (c.zExtension == ZExtension::Distance || c.zExtension == ZExtension::None)
+        out.lacks.push_back("z extension '" + enumName(c.zExtension) + "': Babylon pancakes or reaches the casters' bounds");
     k["cascadeBlendPercentage"] = c.blendBand;
+    if (c.casterFaces != CasterFaces::Front) out.lacks.push_back("caster faces '" + enumName(c.casterFaces) + "': Babylon casts sun-facing faces");
+    const float factor = depthClamp ? 1.5f : 0.5f;
+    if (s.bias.constantUnit == BiasUnit::Depth) k["bias"] = s.bias.constant / factor;
+    else out.lacks.push_back("a constant bias in metres: Babylon's bias is a share of each box's depth");
     if (s.bias.normalOffsetUnit == OffsetUnit::Metres) k["normalBias"] = s.bias.normalOffset;
     else if (s.bias.normalOffset > 0.0f) out.lacks.push_back("normal offset in texels: Babylon's normalBias is metres");
     if (s.bias.slope > 0.0f) out.lacks.push_back("slope-scaled bias");
     if (s.bias.receiverPlane) out.lacks.push_back("receiver-plane bias");
+    if (hasCascadeBias(s.bias)) out.lacks.push_back("bias per cascade");
     switch (s.filter.kind) {
         case FilterKind::Hard: k["filter"] = "none"; break;
         case FilterKind::Pcf2x2: k["filteringQuality"] = "low"; break;
-        case FilterKind::PcfNxN: k["filteringQuality"] = s.filter.size <= 3 ? "medium" : "high"; break;
+        case FilterKind::Tent: k["filteringQuality"] = s.filter.size <= 3 ? "medium" : "high"; break;
+        case FilterKind::Pcss: k["filter"] = "PCSS"; break;
         default: out.lacks.push_back("filter '" + enumName(s.filter.kind) + "': PCF high instead"); break;
     }
     return out;

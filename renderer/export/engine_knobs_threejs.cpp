@@ -14,7 +14,7 @@ using nlohmann::json;
 
 // CSM.js constructor (lines 36-72): `data.x || default`, so 0 and false also take the default.
 json threejsDefaults() {
-    return {{"cascades", 3},        {"mode", "practical"},   {"breaks", json::array()}, {"maxFar", 100000.0},
+    return {{"cascades", 3},        {"mode", "practical"},   {"breaks", nullptr},       {"maxFar", 100000.0},
             {"shadowMapSize", 2048}, {"shadowBias", 0.000001}, {"normalBias", 0.0},     {"radius", 1.0},
             {"lightNear", 1.0},      {"lightFar", 2000.0},     {"lightMargin", 200.0},  {"fade", false},
             {"shadowMapType", "PCFShadowMap"}, {"shadowSide", nullptr}};
@@ -41,8 +41,16 @@ CasterFaces facesOf(const json& side) {
 
 json threejsDefaultKnobs() { return threejsDefaults(); }
 
+// CSM.js reads its numbers as `data.x || default`: 0 (and null) take the default, as in three.js.
+json orDefaults(json k) {
+    const json d = threejsDefaults();
+    for (const char* name : {"cascades", "maxFar", "shadowMapSize", "shadowBias", "lightNear", "lightFar", "lightMargin"})
+        if (k.at(name).is_null() || (k.at(name).is_number() && k.at(name).get<double>() == 0.0)) k[name] = d.at(name);
+    return k;
+}
+
 Settings threejsModel(const json& given, const Settings& view) {
-    const json k = withDefaults(threejsDefaults(), given);
+    const json k = orDefaults(withDefaults(threejsDefaults(), given));
     Settings s = view;
     CascadeSettings& c = s.cascades;
     c = CascadeSettings{};
@@ -65,6 +73,7 @@ Settings threejsModel(const json& given, const Settings& view) {
     // lightNear..lightFar from there.
     c.fit = FitMode::Diagonal;
     c.stabilize = true;
+    c.snap = Snap::CentreFloor;
     const float lightNear = knobFloat(k, "lightNear", 0.0, 1e7);
     const float lightFar = knobFloat(k, "lightFar", lightNear + 1e-3, 1e7);
     c.zExtension = ZExtension::Distance;
@@ -137,7 +146,7 @@ EngineKnobs threejsKnobsFor(const Settings& s) {
     if (s.bias.receiverPlane) out.lacks.push_back("receiver-plane bias");
     if (hasCascadeBias(s.bias)) out.lacks.push_back("bias per cascade");
     if (c.fit != FitMode::Diagonal) out.lacks.push_back("fit '" + enumName(c.fit) + "': three.js fits the diagonal square");
-    if (!c.stabilize) out.lacks.push_back("an unsnapped box: three.js always floors the centre to texels");
+    if (!c.stabilize || c.snap != Snap::CentreFloor) out.lacks.push_back("a box not centre-floored to texels: three.js always floors the centre");
     if (c.selection != Selection::Interval) out.lacks.push_back("map-based cascade selection");
     if (c.blendBand > 0.0f) k["fade"] = true;
     k["shadowSide"] = c.casterFaces == CasterFaces::Back ? json(nullptr)

@@ -13,15 +13,15 @@ namespace {
 
 using nlohmann::json;
 
-void append(std::string& bin, const void* data, std::size_t bytes) { bin.append(static_cast<const char*>(data), bytes); }
+void appendBytes(std::string& bin, const void* data, std::size_t bytes) { bin.append(static_cast<const char*>(data), bytes); }
 
-void pad4(std::string& s, char fill) {
+void padTo4(std::string& s, char fill) {
     while (s.size() % 4 != 0) s.push_back(fill);
 }
 
-void appendU32(std::string& out, std::uint32_t v) { append(out, &v, 4); }
+void appendWord(std::string& out, std::uint32_t v) { appendBytes(out, &v, 4); }
 
-json materialJson(const Material& m) {
+json glbMaterial(const Material& m) {
     json j = {{"pbrMetallicRoughness",
                {{"baseColorFactor", {m.baseColor.r, m.baseColor.g, m.baseColor.b, m.baseColor.a}},
                 {"metallicFactor", 0.0},
@@ -58,10 +58,10 @@ std::string glbOfDraws(const Scene& scene, std::size_t firstDraw) {
         const glm::vec3 p = scene.vertices[used[k]].position;
         lo = k == 0 ? p : glm::min(lo, p);
         hi = k == 0 ? p : glm::max(hi, p);
-        append(bin, &p, sizeof p);
+        appendBytes(bin, &p, sizeof p);
     }
     const std::size_t normalsAt = bin.size();
-    for (std::uint32_t v : used) append(bin, &scene.vertices[v].normal, sizeof(glm::vec3));
+    for (std::uint32_t v : used) appendBytes(bin, &scene.vertices[v].normal, sizeof(glm::vec3));
     const auto count = used.size();
     json views = json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", normalsAt}, {"target", 34962}},
                               {{"buffer", 0}, {"byteOffset", normalsAt}, {"byteLength", bin.size() - normalsAt}, {"target", 34962}}});
@@ -73,7 +73,7 @@ std::string glbOfDraws(const Scene& scene, std::size_t firstDraw) {
     std::unordered_map<int, int> materialIndex;
     for (std::size_t d = 0; d < drawIndices.size(); ++d) {
         const std::size_t at = bin.size();
-        append(bin, drawIndices[d].data(), drawIndices[d].size() * 4);
+        appendBytes(bin, drawIndices[d].data(), drawIndices[d].size() * 4);
         views.push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", drawIndices[d].size() * 4}, {"target", 34963}});
         accessors.push_back({{"bufferView", views.size() - 1}, {"componentType", 5125}, {"count", drawIndices[d].size()},
                              {"type", "SCALAR"}});
@@ -81,12 +81,12 @@ std::string glbOfDraws(const Scene& scene, std::size_t firstDraw) {
         auto [it, added] = materialIndex.try_emplace(m, static_cast<int>(materials.size()));
         if (added) {
             const bool known = m >= 0 && m < static_cast<int>(scene.materials.size());
-            materials.push_back(materialJson(known ? scene.materials[std::size_t(m)] : Material{}));
+            materials.push_back(glbMaterial(known ? scene.materials[std::size_t(m)] : Material{}));
         }
         primitives.push_back({{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", accessors.size() - 1},
                               {"material", it->second}, {"mode", 4}});
     }
-    pad4(bin, '\0');
+    padTo4(bin, '\0');
     const json gltf = {{"asset", {{"version", "2.0"}, {"generator", "shadowtune glb_write"}}},
                        {"scene", 0},
                        {"scenes", {{{"nodes", {0}}}}},
@@ -97,16 +97,16 @@ std::string glbOfDraws(const Scene& scene, std::size_t firstDraw) {
                        {"bufferViews", views},
                        {"accessors", accessors}};
     std::string text = gltf.dump();
-    pad4(text, ' ');
+    padTo4(text, ' ');
     std::string out;
-    appendU32(out, 0x46546C67u);  // "glTF"
-    appendU32(out, 2u);
-    appendU32(out, static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + bin.size()));
-    appendU32(out, static_cast<std::uint32_t>(text.size()));
-    appendU32(out, 0x4E4F534Au);  // "JSON"
+    appendWord(out, 0x46546C67u);  // "glTF"
+    appendWord(out, 2u);
+    appendWord(out, static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + bin.size()));
+    appendWord(out, static_cast<std::uint32_t>(text.size()));
+    appendWord(out, 0x4E4F534Au);  // "JSON"
     out += text;
-    appendU32(out, static_cast<std::uint32_t>(bin.size()));
-    appendU32(out, 0x004E4942u);  // "BIN\0"
+    appendWord(out, static_cast<std::uint32_t>(bin.size()));
+    appendWord(out, 0x004E4942u);  // "BIN\0"
     out += bin;
     return out;
 }

@@ -40,6 +40,7 @@ std::vector<KindDescriptor> filterKinds() {
          {"filter.size", "filter.weights", "filter.blockerTaps", "filter.pcssMaxRadius", kReceiverPlane},
          {S::Array, S::Atlas}},
         {ST_FILTER_VOGEL, "", {"filter.vogelTaps", "filter.radius", kReceiverPlane}, {}},
+        {ST_FILTER_TENT, "", {"filter.size", kReceiverPlane}, {}},
     };
 }
 
@@ -69,7 +70,7 @@ std::vector<KindDescriptor> zExtensionKinds() {
     return {{ST_ZEXT_NONE, "", {}, {}},
             {ST_ZEXT_DISTANCE, "", {"cascades.zExtensionDistance"}, {}},
             {ST_ZEXT_SCENE_BOUNDS, "", {}, {}},
-            {ST_ZEXT_PANCAKE, "", {}, {}}};
+            {ST_ZEXT_PANCAKE, "", {"cascades.pancakeToCasters"}, {}}};
 }
 
 std::vector<KindDescriptor> screenKinds() {
@@ -171,7 +172,7 @@ constexpr std::string_view kIndependent[] = {
     "light.angularDiameter", "cascades.count", "cascades.shadowDistance", "cascades.depthBounds",
     "cascades.mapSize", "cascades.fit", "cascades.stabilize", "cascades.casterCulling", "cascades.updateInterval",
     "cascades.blendBand", "cascades.fadeBand", "cascades.cameraRelative", "cascades.fitFovY",
-    "cascades.matricesOneFrameLate", "cascades.lightDepth", "cascades.casterFaces", "filter.padding", "bias.constant",
+    "cascades.matricesOneFrameLate", "cascades.lightDepth", "cascades.casterFaces", "cascades.snap", "bias.constantUnit", "filter.padding", "bias.constant",
     "bias.slope", "bias.normalOffset", "bias.normalOffsetUnit", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
     "output.height", "path.frames", "path.keyframes", "measure.sunRays", "measure.artifactTexels",
     // The mode fields themselves: each one always applies.

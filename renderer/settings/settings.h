@@ -63,6 +63,24 @@ struct EnumNames<CasterFaces> {
     static constexpr std::array<std::string_view, ST_FACES_COUNT> names{"both", "back", "front"};
 };
 
+// How a stabilized light box moves onto the texel grid (cascades.stabilize): BoxFloor floors its
+// min corner to texels of size / (m - 1) (seed 001); CentreFloor floors its centre to texels of
+// size / m (three.js CSM.js update()); CentreRound rounds its centre, which puts the world origin on
+// a texel corner (Babylon.js cascadedShadowGenerator.pure.js _computeMatrices).
+enum class Snap { BoxFloor = ST_SNAP_BOX_FLOOR, CentreFloor = ST_SNAP_CENTRE_FLOOR, CentreRound = ST_SNAP_CENTRE_ROUND };
+template <>
+struct EnumNames<Snap> {
+    static constexpr std::array<std::string_view, ST_SNAP_COUNT> names{"box-floor", "centre-floor", "centre-round"};
+};
+
+// What bias.constant counts: metres along the light, or the light box's normalised depth (three.js's
+// shadowBias on the receiver, Babylon.js's bias on the caster), whose metres grow with each box's depth.
+enum class BiasUnit { Metres = ST_BIASUNIT_METRES, Depth = ST_BIASUNIT_DEPTH };
+template <>
+struct EnumNames<BiasUnit> {
+    static constexpr std::array<std::string_view, ST_BIASUNIT_COUNT> names{"metres", "depth"};
+};
+
 // What bias.normalOffset counts: the cascade's texels (scales with the map's footprint) or metres
 // (three.js's and Babylon's normalBias).
 enum class OffsetUnit { Texels = ST_OFFSET_TEXELS, Metres = ST_OFFSET_METRES };
@@ -113,12 +131,13 @@ enum class FilterKind {
     Msm = ST_FILTER_MSM,
     Pcss = ST_FILTER_PCSS,
     Vogel = ST_FILTER_VOGEL,
+    Tent = ST_FILTER_TENT,
 };
 template <>
 struct EnumNames<FilterKind> {
     static constexpr std::array<std::string_view, ST_FILTER_COUNT> names{"hard", "pcf2x2", "pcf-nxn", "vsm",
                                                                          "evsm2", "evsm4", "msm", "pcss",
-                                                                         "pcf-vogel"};
+                                                                         "pcf-vogel", "pcf-tent"};
 };
 constexpr bool isMomentFilter(FilterKind k) { return k >= FilterKind::Vsm && k <= FilterKind::Msm; }
 
@@ -178,11 +197,13 @@ struct EnumNames<View> {
 static_assert(int(SplitScheme::Manual) == ST_SPLIT_COUNT - 1 && int(SplitScheme::Uniform) == 0);
 static_assert(int(FitMode::Diagonal) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
 static_assert(int(CasterFaces::Front) == ST_FACES_COUNT - 1 && int(CasterFaces::Both) == 0);
+static_assert(int(Snap::CentreRound) == ST_SNAP_COUNT - 1 && int(Snap::BoxFloor) == 0);
+static_assert(int(BiasUnit::Depth) == ST_BIASUNIT_COUNT - 1 && int(BiasUnit::Metres) == 0);
 static_assert(int(OffsetUnit::Metres) == ST_OFFSET_COUNT - 1 && int(OffsetUnit::Texels) == 0);
 static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBounds::Off) == 0);
 static_assert(int(ZExtension::Pancake) == ST_ZEXT_COUNT - 1 && int(ZExtension::None) == 0);
 static_assert(int(Selection::Map) == ST_SELECT_COUNT - 1 && int(Selection::Interval) == 0);
-static_assert(int(FilterKind::Vogel) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
+static_assert(int(FilterKind::Tent) == ST_FILTER_COUNT - 1 && int(FilterKind::Hard) == 0);
 static_assert(int(FilterWeights::Gaussian) == ST_WEIGHTS_COUNT - 1 && int(FilterWeights::Box) == 0);
 static_assert(int(ScreenSpace::Blur) == ST_SCREEN_COUNT - 1 && int(ScreenSpace::Off) == 0);
 static_assert(int(ContactShadows::March) == ST_CONTACT_COUNT - 1 && int(ContactShadows::Off) == 0);
@@ -229,10 +250,12 @@ struct CascadeSettings {
     int atlasPadding = 8;                  // texels of lit border between atlas tiles
     FitMode fit = FitMode::Cascade;
     bool stabilize = false;                // snap the light box to whole texels (seed 001)
+    Snap snap = Snap::BoxFloor;            // how, when stabilize is on
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 100.0f;     // metres, for ZExtension::Distance
     float lightDepth = 0.0f;               // metres from the box's near plane to its far one; 0 = to the slice's far side
     CasterFaces casterFaces = CasterFaces::Both;
+    bool pancakeToCasters = false;         // pancake: the box's depth tightened to the casters' bounds (Babylon.js)
     Selection selection = Selection::Interval;
     float blendBand = 0.0f;                // fraction of a cascade's depth range blended into the next, 0..0.5
     bool casterCulling = true;             // cull casters whose shadow cannot reach the slice (Bittner 2011)
@@ -281,7 +304,8 @@ struct FilterSettings {
 };
 
 struct BiasSettings {
-    float constant = 0.02f;     // metres toward the light (negative: away, as three.js's positive shadowBias)
+    float constant = 0.02f;     // toward the light, in constantUnit (negative: away, as three.js's positive shadowBias)
+    BiasUnit constantUnit = BiasUnit::Metres;
     float slope = 1.0f;         // texel world sizes per unit of tan(angle to light)
     float normalOffset = 0.0f;  // receiver moved along its normal, in normalOffsetUnit
     OffsetUnit normalOffsetUnit = OffsetUnit::Texels;

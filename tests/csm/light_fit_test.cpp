@@ -220,6 +220,7 @@ TEST(LightFitTest, DiagonalFitIsTheLongerDiagonalSquareWithItsCentreFlooredToTex
             FitParams p;
             p.fit = FitMode::Diagonal;
             p.stabilize = true;
+            p.snap = Snap::CentreFloor;
             p.mapSize = 2048;
             p.zExtension = ZExtension::Distance;
             p.zExtensionDistance = 199.0f;

@@ -27,29 +27,29 @@ Settings handSplits() {
 }
 
 // An item the export must have: a missing one fails the test (an exception) instead of crashing it.
-const ExportItem& item(const EngineExport& e, const std::string& name) {
+const ExportItem& requireItem(const EngineExport& e, const std::string& name) {
     const ExportItem* i = e.find(name);
     if (!i) throw std::runtime_error("no export item " + name);
     return *i;
 }
 
-double number(const EngineExport& e, const char* name) { return item(e, name).value.get<double>(); }
+double number(const EngineExport& e, const char* name) { return requireItem(e, name).value.get<double>(); }
 
 TEST(ExportMathTest, GodotAndFilamentSplitsAreFractionsOfTheRangeFromNear) {
     const EngineExport g = exportSettings(handSplits(), Engine::Godot);
     EXPECT_NEAR(number(g, "directional_shadow_split_1"), 9.0 / 99.0, 1e-6);   // (10 - 1) / (100 - 1)
     EXPECT_NEAR(number(g, "directional_shadow_split_2"), 29.0 / 99.0, 1e-6);  // (30 - 1) / 99
     EXPECT_NEAR(number(g, "directional_shadow_split_3"), 59.0 / 99.0, 1e-6);  // (60 - 1) / 99
-    const nlohmann::json pos = item(exportSettings(handSplits(), Engine::Filament), "cascadeSplitPositions").value;
+    const nlohmann::json pos = requireItem(exportSettings(handSplits(), Engine::Filament), "cascadeSplitPositions").value;
     EXPECT_NEAR(pos[1].get<double>(), 29.0 / 99.0, 1e-6);
 }
 
 TEST(ExportMathTest, UnityAndThreeJsSplitsAreFractionsOfTheEnd) {
-    EXPECT_EQ(item(exportSettings(handSplits(), Engine::Unity), "cascade4Split").value,
+    EXPECT_EQ(requireItem(exportSettings(handSplits(), Engine::Unity), "cascade4Split").value,
               nlohmann::json({0.1, 0.3, 0.6}));
     const EngineExport t = exportSettings(handSplits(), Engine::ThreeJs);
-    EXPECT_EQ(item(t, "breaks").value, nlohmann::json({0.1, 0.3, 0.6, 1.0}));
-    EXPECT_EQ(item(t, "mode").value, "custom");  // manual splits go through customSplitsCallback
+    EXPECT_EQ(requireItem(t, "breaks").value, nlohmann::json({0.1, 0.3, 0.6, 1.0}));
+    EXPECT_EQ(requireItem(t, "mode").value, "custom");  // manual splits go through customSplitsCallback
 }
 
 TEST(ExportMathTest, UnrealAccumulatedScaleAndExponentFit) {
@@ -59,7 +59,7 @@ TEST(ExportMathTest, UnrealAccumulatedScaleAndExponentFit) {
     EXPECT_NEAR(fitDistributionExponent({1.0 / 7.0, 3.0 / 7.0}, 3).exponent, 2.0, 1e-6);  // 1, 2, 4
     const ExponentFit fit = fitDistributionExponent({9.0 / 99.0, 29.0 / 99.0, 59.0 / 99.0}, 4);
     EXPECT_GT(fit.maxError, 0.0);  // 10/30/60 is no geometric series: approximated, with its error
-    EXPECT_EQ(item(exportSettings(handSplits(), Engine::Unreal), "CascadeDistributionExponent").mapping,
+    EXPECT_EQ(requireItem(exportSettings(handSplits(), Engine::Unreal), "CascadeDistributionExponent").mapping,
               Mapping::Approximated);
 }
 
@@ -70,8 +70,8 @@ TEST(ExportMathTest, ExactFieldsFollowThePreset) {
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "directional_shadow_max_distance"), 80.0);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unity), "shadowDistance"), 80.0);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unreal), "DynamicShadowDistanceMovableLight"), 8000.0);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "mapSize").value, 512);
-    EXPECT_EQ(item(exportSettings(s, Engine::Bevy), "DirectionalLightShadowMap.size").value, 512);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "mapSize").value, 512);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Bevy), "DirectionalLightShadowMap.size").value, 512);
     s.bias.constant = 0.05f;
     EXPECT_NEAR(number(exportSettings(s, Engine::Bevy), "DirectionalLight.shadow_depth_bias"), 0.05, 1e-7);
     EXPECT_NEAR(number(exportSettings(s, Engine::Filament), "constantBias"), 0.05, 1e-7);
@@ -85,14 +85,14 @@ TEST(ExportMathTest, FarFadeIsAShareOfTheShadowDistance) {
     EXPECT_NEAR(number(exportSettings(s, Engine::Godot), "directional_shadow_fade_start"), 0.8, 1e-6);
     EXPECT_NEAR(number(exportSettings(s, Engine::Unreal), "ShadowDistanceFadeoutFraction"), 0.2, 1e-6);
     for (Engine e : {Engine::Bevy, Engine::ThreeJs})
-        EXPECT_EQ(item(exportSettings(s, e), "(far fade)").mapping, Mapping::NoEquivalent) << kEngineNames[size_t(e)];
+        EXPECT_EQ(requireItem(exportSettings(s, e), "(far fade)").mapping, Mapping::NoEquivalent) << kEngineNames[size_t(e)];
     // Filament fades from 0.894 x shadowFar to shadowFar whenever shadowFar > 0 (light_directional.fs), with no
     // setting for the band; with shadowFar 0 (the camera far) it cuts off.
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "(far fade)").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "(far fade)").mapping, Mapping::Approximated);
     s.cascades.fadeBand = 0.0f;  // no fade: the engines' cut-off, stated as exact
-    EXPECT_EQ(item(exportSettings(s, Engine::Unity), "cascadeBorder").mapping, Mapping::Exact);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unity), "cascadeBorder").mapping, Mapping::Exact);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "directional_shadow_fade_start"), 1.0);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "(far fade)").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "(far fade)").mapping, Mapping::NoEquivalent);
     s.cascades.shadowDistance = 0.0f;
     EXPECT_EQ(exportSettings(s, Engine::Filament).find("(far fade)"), nullptr);
 }
@@ -103,24 +103,24 @@ TEST(ExportMathTest, MomentFiltersAndPcssMapToTheEnginesOwnModes) {
     Settings s = handSplits();
     s.filter.kind = FilterKind::Vsm;
     const EngineExport unity = exportSettings(s, Engine::Unity);
-    EXPECT_EQ(item(unity, "supportsSoftShadows").value, true);
-    EXPECT_EQ(item(unity, "supportsSoftShadows").mapping, Mapping::Approximated);
-    EXPECT_EQ(item(unity, "(filter.kind vsm)").mapping, Mapping::NoEquivalent);
-    EXPECT_EQ(item(exportSettings(s, Engine::ThreeJs), "renderer.shadowMap.type").value, "VSMShadowMap");
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "View::setShadowType").value, "VSM");
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "ShadowOptions.vsm.elvsm").value, false);
+    EXPECT_EQ(requireItem(unity, "supportsSoftShadows").value, true);
+    EXPECT_EQ(requireItem(unity, "supportsSoftShadows").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(unity, "(filter.kind vsm)").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::ThreeJs), "renderer.shadowMap.type").value, "VSMShadowMap");
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "View::setShadowType").value, "VSM");
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "ShadowOptions.vsm.elvsm").value, false);
     s.filter.kind = FilterKind::Evsm4;
     s.filter.blurRadius = 3;
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "ShadowOptions.vsm.elvsm").value, true);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "ShadowOptions.vsm.blurWidth").value, 7);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "ShadowOptions.vsm.elvsm").value, true);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "ShadowOptions.vsm.blurWidth").value, 7);
     for (Engine e : {Engine::Godot, Engine::Unreal, Engine::Bevy})
-        EXPECT_EQ(item(exportSettings(s, e), "(filter.kind evsm4)").mapping, Mapping::NoEquivalent) << kEngineNames[size_t(e)];
+        EXPECT_EQ(requireItem(exportSettings(s, e), "(filter.kind evsm4)").mapping, Mapping::NoEquivalent) << kEngineNames[size_t(e)];
     s.filter.kind = FilterKind::Pcss;
     s.light.angularDiameter = 0.53f;
     EXPECT_NEAR(number(exportSettings(s, Engine::Godot), "light_angular_distance"), 0.53, 1e-6);
-    EXPECT_EQ(item(exportSettings(s, Engine::Unreal), "r.Shadow.FilterMethod").value, 1);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unreal), "r.Shadow.FilterMethod").value, 1);
     EXPECT_NEAR(number(exportSettings(s, Engine::Unreal), "LightSourceAngle"), 0.53, 1e-6);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "View::setShadowType").value, "PCSS");
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "View::setShadowType").value, "PCSS");
     s.filter.kind = FilterKind::Pcf2x2;
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "light_angular_distance"), 0.0);
     EXPECT_EQ(exportSettings(s, Engine::Unreal).find("LightSourceAngle"), nullptr);
@@ -140,10 +140,10 @@ TEST(ExportMathTest, ShadowtuneOnlySettingsAreListedWhereUsed) {
         for (const char* name :
              {"(depth-fitted cascades)", "(cascade update interval)", "(PCF padding)", "(screen-space shadow blur)"}) {
             ASSERT_NE(e.find(name), nullptr) << kEngineNames[i] << " " << name;
-            EXPECT_EQ(item(e, name).mapping, Mapping::NoEquivalent);
+            EXPECT_EQ(requireItem(e, name).mapping, Mapping::NoEquivalent);
         }
     }
-    EXPECT_EQ(item(exportSettings(s, Engine::Unity), "(cascade update interval)").value, nlohmann::json({1, 1, 2, 4}));
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unity), "(cascade update interval)").value, nlohmann::json({1, 1, 2, 4}));
 }
 
 // No engine holds a bias per cascade: every exporter lists each scaled bias with its values per
@@ -232,13 +232,13 @@ TEST(ExportMathTest, NewerKnobsMapToTheEnginesSettingOrSayThereIsNone) {
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "directional_shadow_min_fov"), 70.0);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Godot), "(contact shadows)"), 0.25);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unreal), "ContactShadowLength"), 25.0);  // cm
-    EXPECT_EQ(item(exportSettings(s, Engine::Unreal), "ContactShadowLengthInWS").value, true);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unreal), "ContactShadowLengthInWS").value, true);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Filament), "maxShadowDistance"), 0.25);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Bevy), "ContactShadows.length"), 0.25);
-    EXPECT_EQ(item(exportSettings(s, Engine::Bevy), "ContactShadows.linear_steps").value, 16);
-    EXPECT_EQ(item(exportSettings(s, Engine::Bevy), "DirectionalLight.contact_shadows_enabled").value, true);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "stepCount").value, 16);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "screenSpaceContactShadows").value, true);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Bevy), "ContactShadows.linear_steps").value, 16);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Bevy), "DirectionalLight.contact_shadows_enabled").value, true);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "stepCount").value, 16);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "screenSpaceContactShadows").value, true);
     EXPECT_DOUBLE_EQ(number(exportSettings(s, Engine::Unity), "(fit field of view)"), 70.0);
 }
 
@@ -253,7 +253,7 @@ TEST(ExportMathTest, GodotShadowBiasDividesByTheSoftFilterRadius) {
     const double range = double(presetFacts(s).texel.front()) * s.cascades.mapSize + 20.0;  // 2 r + pancake
     s.filter.kind = FilterKind::PcfNxN;
     s.filter.size = 3;  // soft low: radius 2
-    EXPECT_EQ(item(exportSettings(s, Engine::Godot), "rendering/lights_and_shadows/directional_shadow/soft_shadow_filter_quality").value, 2);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Godot), "rendering/lights_and_shadows/directional_shadow/soft_shadow_filter_quality").value, 2);
     EXPECT_NEAR(number(exportSettings(s, Engine::Godot), "shadow_bias"), 100.0 * 0.05 / (range * 2.0), 1e-5);
     s.filter.size = 7;  // soft high: radius 3
     EXPECT_NEAR(number(exportSettings(s, Engine::Godot), "shadow_bias"), 100.0 * 0.05 / (range * 3.0), 1e-5);
@@ -283,35 +283,35 @@ TEST(ExportMathTest, GodotThreeCascadesAreFourSplitsAndSaySo) {
     s.cascades.count = 3;
     s.cascades.manualSplits = {10.0f, 30.0f};
     const EngineExport g = exportSettings(s, Engine::Godot);
-    EXPECT_EQ(item(g, "directional_shadow_mode").value, 2);
-    EXPECT_EQ(item(g, "directional_shadow_mode").mapping, Mapping::Approximated);
-    EXPECT_NE(item(g, "directional_shadow_mode").note.find("cannot be expressed"), std::string::npos);
+    EXPECT_EQ(requireItem(g, "directional_shadow_mode").value, 2);
+    EXPECT_EQ(requireItem(g, "directional_shadow_mode").mapping, Mapping::Approximated);
+    EXPECT_NE(requireItem(g, "directional_shadow_mode").note.find("cannot be expressed"), std::string::npos);
     EXPECT_NEAR(number(g, "directional_shadow_split_1"), 9.0 / 99.0, 1e-6);
-    EXPECT_EQ(item(g, "directional_shadow_split_1").mapping, Mapping::Exact);
+    EXPECT_EQ(requireItem(g, "directional_shadow_split_1").mapping, Mapping::Exact);
     EXPECT_NEAR(number(g, "directional_shadow_split_2"), 29.0 / 99.0, 1e-6);
-    EXPECT_EQ(item(g, "directional_shadow_split_2").mapping, Mapping::Exact);
+    EXPECT_EQ(requireItem(g, "directional_shadow_split_2").mapping, Mapping::Exact);
     EXPECT_GT(number(g, "directional_shadow_split_3"), 29.0 / 99.0);  // inside the preset's last cascade
     EXPECT_LT(number(g, "directional_shadow_split_3"), 1.0);
-    EXPECT_EQ(item(g, "directional_shadow_split_3").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(g, "directional_shadow_split_3").mapping, Mapping::Approximated);
     s.cascades.count = 2;  // the 2-split mode reads split_1 only
     s.cascades.manualSplits = {10.0f};
     const EngineExport two = exportSettings(s, Engine::Godot);
-    EXPECT_EQ(item(two, "directional_shadow_split_1").mapping, Mapping::Exact);
-    EXPECT_EQ(item(two, "directional_shadow_split_2").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(two, "directional_shadow_split_1").mapping, Mapping::Exact);
+    EXPECT_EQ(requireItem(two, "directional_shadow_split_2").mapping, Mapping::NoEquivalent);
 }
 
 // CascadeShadowConfig.bounds takes any list of far bounds (cascade.rs), so the preset's splits map exactly;
 // Bevy draws at most MAX_CASCADES_PER_LIGHT = 4 (light.rs), so 8 cascades are not exact.
 TEST(ExportMathTest, BevyBoundsAreThePresetsSplitsUpToFour) {
     const EngineExport b = exportSettings(handSplits(), Engine::Bevy);  // 10, 30, 60: no geometric series
-    EXPECT_EQ(item(b, "CascadeShadowConfig.bounds").value, nlohmann::json({10.0, 30.0, 60.0, 100.0}));
-    EXPECT_EQ(item(b, "CascadeShadowConfig.bounds").mapping, Mapping::Exact);
+    EXPECT_EQ(requireItem(b, "CascadeShadowConfig.bounds").value, nlohmann::json({10.0, 30.0, 60.0, 100.0}));
+    EXPECT_EQ(requireItem(b, "CascadeShadowConfig.bounds").mapping, Mapping::Exact);
     Settings s = handSplits();
     s.cascades.count = 8;
     s.cascades.manualSplits = {5.0f, 10.0f, 20.0f, 30.0f, 45.0f, 60.0f, 80.0f};
     const EngineExport eight = exportSettings(s, Engine::Bevy);
-    EXPECT_EQ(item(eight, "CascadeShadowConfig.bounds").value, nlohmann::json({5.0, 10.0, 20.0, 100.0}));
-    EXPECT_EQ(item(eight, "CascadeShadowConfig.bounds").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(eight, "CascadeShadowConfig.bounds").value, nlohmann::json({5.0, 10.0, 20.0, 100.0}));
+    EXPECT_EQ(requireItem(eight, "CascadeShadowConfig.bounds").mapping, Mapping::Approximated);
 }
 
 // DirectionalLight.soft_shadow_size is a world size in metres (shadow_sampling.wesl: the search's uv
@@ -331,10 +331,10 @@ TEST(ExportMathTest, FilamentStableIsNotExactAndNormalBiasIsHalfTexels) {
     Settings s = handSplits();
     s.cascades.fit = FitMode::Sphere;
     s.cascades.stabilize = true;
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "stable").value, true);
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "stable").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "stable").value, true);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "stable").mapping, Mapping::Approximated);
     s.cascades.stabilize = false;
-    EXPECT_EQ(item(exportSettings(s, Engine::Filament), "stable").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Filament), "stable").mapping, Mapping::Approximated);
     s.bias.normalOffset = 0.75f;
     EXPECT_NEAR(number(exportSettings(s, Engine::Filament), "normalBias"), 1.5, 1e-6);
 }
@@ -343,12 +343,12 @@ TEST(ExportMathTest, FilamentStableIsNotExactAndNormalBiasIsHalfTexels) {
 // shadowtune's 'map' selection, never 'interval'.
 TEST(ExportMathTest, UnitySelectionIsTheFirstSphereHoldingThePixel) {
     Settings s = handSplits();  // 4 cascades, interval
-    EXPECT_EQ(item(exportSettings(s, Engine::Unity), "(cascade selection)").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unity), "(cascade selection)").mapping, Mapping::NoEquivalent);
     s.cascades.selection = Selection::Map;
-    EXPECT_EQ(item(exportSettings(s, Engine::Unity), "(cascade selection)").mapping, Mapping::Approximated);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unity), "(cascade selection)").mapping, Mapping::Approximated);
     s.cascades.count = 1;
     s.cascades.manualSplits.clear();
-    EXPECT_EQ(item(exportSettings(s, Engine::Unity), "(cascade selection)").mapping, Mapping::Exact);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unity), "(cascade selection)").mapping, Mapping::Exact);
 }
 
 // ShadowUtils.GetShadowBias: with soft shadows both biases grow by 1.5 / 2.5 / 3.5 for low / medium / high.
@@ -361,7 +361,7 @@ TEST(ExportMathTest, UnitySoftShadowBiasFollowsTheQuality) {
     for (auto [size, quality, kernel] : {std::tuple{3, "Low", 1.5}, {5, "Medium", 2.5}, {7, "High", 3.5}}) {
         s.filter.size = size;
         const EngineExport u = exportSettings(s, Engine::Unity);
-        EXPECT_EQ(item(u, "softShadowQuality").value, quality);
+        EXPECT_EQ(requireItem(u, "softShadowQuality").value, quality);
         EXPECT_NEAR(number(u, "shadowDepthBias"), 0.05 / (texel * kernel), 1e-5) << quality;
         EXPECT_NEAR(number(u, "shadowNormalBias"), 3.0 / kernel, 1e-6) << quality;
     }
@@ -380,10 +380,10 @@ TEST(ExportMathTest, UnrealSlopeBiasIsAMultipleOfTheConstantBias) {
     const EngineExport u = exportSettings(s, Engine::Unreal);
     EXPECT_NEAR(number(u, "ShadowBias"), 0.5, 1e-4);
     EXPECT_NEAR(number(u, "ShadowSlopeBias"), 0.5, 1e-4);
-    EXPECT_EQ(item(u, "r.Shadow.ShadowMaxSlopeScaleDepthBias").mapping, Mapping::NoEquivalent);
-    EXPECT_EQ(item(u, "r.Shadow.CSMReceiverBias").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(u, "r.Shadow.ShadowMaxSlopeScaleDepthBias").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(u, "r.Shadow.CSMReceiverBias").mapping, Mapping::NoEquivalent);
     s.bias.constant = 0.0f;  // no constant bias: UE's slope bias is 0 whatever ShadowSlopeBias says
-    EXPECT_EQ(item(exportSettings(s, Engine::Unreal), "ShadowSlopeBias").mapping, Mapping::NoEquivalent);
+    EXPECT_EQ(requireItem(exportSettings(s, Engine::Unreal), "ShadowSlopeBias").mapping, Mapping::NoEquivalent);
 }
 
 TEST(ExportMathTest, EngineNames) {

@@ -52,13 +52,13 @@ TEST(KindDescriptorsTest, EachModeDescribesEveryEnumeratorOfItsField) {
 TEST(KindDescriptorsTest, FilterParametersApplyToTheKindsWhoseShaderReadsThem) {
     using F = FilterKind;
     const std::vector<std::pair<const char*, std::vector<F>>> uses{
-        {"filter.size", {F::PcfNxN, F::Pcss}},
+        {"filter.size", {F::PcfNxN, F::Pcss, F::Tent}},
         {"filter.weights", {F::PcfNxN, F::Pcss}},  // PCSS's kernel takes the NxN weights (pcfWeights)
         {"filter.minVariance", {F::Vsm, F::Evsm2, F::Evsm4}},
         {"filter.evsmNegative", {F::Evsm4}},
         {"filter.momentBias", {F::Msm}},
         {"filter.blockerTaps", {F::Pcss}},
-        {"bias.receiverPlane", {F::Hard, F::Pcf2x2, F::PcfNxN, F::Pcss, F::Vogel}},
+        {"bias.receiverPlane", {F::Hard, F::Pcf2x2, F::PcfNxN, F::Pcss, F::Vogel, F::Tent}},
         {"filter.vogelTaps", {F::Vogel}},
         {"filter.radius", {F::Vogel}}};
     Settings s;
@@ -70,7 +70,7 @@ TEST(KindDescriptorsTest, FilterParametersApplyToTheKindsWhoseShaderReadsThem) {
         }
     s.filter.kind = F::Vsm;
     EXPECT_EQ(notApplicableReason(s, "bias.receiverPlane"),
-              "Used with filter.kind hard, pcf2x2, pcf-nxn, pcss and pcf-vogel only (now vsm).");
+              "Used with filter.kind hard, pcf2x2, pcf-nxn, pcss, pcf-vogel and pcf-tent only (now vsm).");
 }
 
 TEST(KindDescriptorsTest, NumericRulesElementPathsAndUnknownPaths) {

@@ -20,8 +20,9 @@ Settings everyFieldChanged() {
     s.cascades = {.count = 3, .scheme = SplitScheme::Manual, .lambda = 0.8f, .manualSplits = {10.0f, 40.5f},
                   .shadowDistance = 150.0f, .depthBounds = DepthBounds::Fit, .mapSize = 2048, .storage = CascadeStorage::Atlas,
                   .mapSizes = {2048, 1024, 512}, .atlasPadding = 4, .fit = FitMode::Sphere, .stabilize = true,
+                  .snap = Snap::CentreRound,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .lightDepth = 300.0f,
-                  .casterFaces = CasterFaces::Back, .selection = Selection::Map,
+                  .casterFaces = CasterFaces::Back, .pancakeToCasters = true, .selection = Selection::Map,
                   .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f,
                   .cameraRelative = true, .fitFovY = 70.0f, .matricesOneFrameLate = true};
     s.filter = {.kind = FilterKind::PcfNxN, .size = 5, .weights = FilterWeights::Gaussian, .padding = true,
@@ -30,7 +31,7 @@ Settings everyFieldChanged() {
                 .pcssMaxRadius = 12.0f, .vogelTaps = 7, .radius = 1.5f, .screenSpace = ScreenSpace::Blur, .screenDownsample = 4,
                 .screenBlurRadius = 6, .screenDepthSigma = 0.25f, .contact = ContactShadows::March, .contactLength = 1.25f,
                 .contactSteps = 20, .contactThickness = 0.75f};
-    s.bias = {.constant = 0.005f, .slope = 2.5f, .normalOffset = 1.5f,
+    s.bias = {.constant = 0.005f, .constantUnit = BiasUnit::Depth, .slope = 2.5f, .normalOffset = 1.5f,
               .normalOffsetUnit = OffsetUnit::Metres, .receiverPlane = true,
               .constantScale = {1.0f, 1.5f, 2.25f}, .slopeScale = {0.5f, 1.0f, 1.0f}, .normalOffsetScale = {1.0f, 1.0f, 3.0f}};
     s.output = {.width = 800, .height = 600, .view = View::Cascades, .texelBlock = 16, .sideTexels = true};

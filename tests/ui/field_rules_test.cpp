@@ -148,7 +148,7 @@ TEST(FieldRulesTest, FilterStorageAndViewFieldsApplyToTheirModesOnly) {
     auto applies = [](const char* path, const Settings& s) { return notApplicableReason(*findField(path), s).empty(); };
     Settings s;
     const std::vector<std::pair<const char*, std::vector<FilterKind>>> uses{
-        {"filter.size", {FilterKind::PcfNxN, FilterKind::Pcss}},
+        {"filter.size", {FilterKind::PcfNxN, FilterKind::Pcss, FilterKind::Tent}},
         {"filter.weights", {FilterKind::PcfNxN, FilterKind::Pcss}},  // PCSS spreads the NxN weights
         {"filter.blurRadius", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}},
         {"filter.bleedExponent", {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm}},
@@ -158,7 +158,7 @@ TEST(FieldRulesTest, FilterStorageAndViewFieldsApplyToTheirModesOnly) {
         {"filter.momentBias", {FilterKind::Msm}},
         {"filter.pcssMaxRadius", {FilterKind::Pcss}},
         {"filter.padding", {FilterKind::Hard, FilterKind::Pcf2x2, FilterKind::PcfNxN, FilterKind::Vsm, FilterKind::Evsm2,
-                            FilterKind::Evsm4, FilterKind::Msm, FilterKind::Pcss, FilterKind::Vogel}}};
+                            FilterKind::Evsm4, FilterKind::Msm, FilterKind::Pcss, FilterKind::Vogel, FilterKind::Tent}}};
     for (const auto& [path, kinds] : uses)
         for (int k = 0; k < ST_FILTER_COUNT; ++k) {
             s.filter.kind = FilterKind(k);
