@@ -37,6 +37,7 @@ EngineExport exportSettings(const Settings& s, Engine engine) {
         case Engine::Bevy: return exportBevy(s, f);
         case Engine::ThreeJs: return exportThreeJs(s, f);
         case Engine::Filament: return exportFilament(s, f);
+        case Engine::Babylon: return exportBabylon(s, f);
     }
     throw std::invalid_argument("unknown engine");
 }

@@ -14,12 +14,12 @@
 
 namespace st::xport {
 
-enum class Engine { Godot, Unity, Unreal, Bevy, ThreeJs, Filament };
-inline constexpr std::array<std::string_view, 6> kEngineNames{"godot", "unity", "unreal", "bevy", "threejs",
-                                                              "filament"};
+enum class Engine { Godot, Unity, Unreal, Bevy, ThreeJs, Filament, Babylon };
+inline constexpr std::array<std::string_view, 7> kEngineNames{"godot", "unity", "unreal", "bevy", "threejs",
+                                                              "filament", "babylon"};
 
 std::optional<Engine> parseEngine(std::string_view name);
-std::string engineList();  // "godot, unity, unreal, bevy, threejs, filament"
+std::string engineList();  // "godot, unity, unreal, bevy, threejs, filament, babylon"
 
 enum class Mapping { Exact, Approximated, NoEquivalent };
 

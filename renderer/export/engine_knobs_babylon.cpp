@@ -2,6 +2,7 @@
 // shadowtune settings. engines/babylon/NOTES.md cites the source line of each behaviour; the
 // line numbers here are of cascadedShadowGenerator.pure.js (cSG) and shadowGenerator.js (SG).
 #include "renderer/export/engine_knobs_detail.h"
+#include "renderer/export/export_common.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -79,7 +80,8 @@ Settings babylonModel(const json& given, const Settings& view) {
     // shadowMapFragment.js: the caster's stored depth gains 1.5 x bias with depth clamp (the bias in
     // clip space and again in the fragment), 0.5 x without; receivers are not biased. For a constant
     // depth the two sides are the same comparison.
-    b.constant = (depthClamp ? 1.5f : 0.5f) * knobFloat(k, "bias", -1.0, 1.0);
+    (void)knobFloat(k, "bias", -1.0, 1.0);  // its range
+    b.constant = static_cast<float>((depthClamp ? 1.5 : 0.5) * k.at("bias").get<double>());
     b.constantUnit = BiasUnit::Depth;
     b.slope = 0.0f;
     // Babylon moves casters into their surface by normalBias x sin(theta) (shadowMapVertexNormalBias.js);
@@ -95,11 +97,11 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     const CascadeSettings& c = s.cascades;
     k["numCascades"] = std::clamp(c.count, 2, 4);
     if (c.count < 2 || c.count > 4) out.lacks.push_back(std::to_string(c.count) + " cascades: Babylon takes 2 to 4");
-    if (c.scheme == SplitScheme::Practical) k["lambda"] = c.lambda;
+    if (c.scheme == SplitScheme::Practical) k["lambda"] = round6(c.lambda);
     else if (c.scheme == SplitScheme::Uniform) k["lambda"] = 0.0;
     else if (c.scheme == SplitScheme::Logarithmic) k["lambda"] = 1.0;
     else out.lacks.push_back("manual splits: Babylon splits by lambda");
-    if (c.shadowDistance > 0.0f) k["shadowMaxZ"] = c.shadowDistance;
+    if (c.shadowDistance > 0.0f) k["shadowMaxZ"] = round6(c.shadowDistance);
     k["mapSize"] = c.mapSize;
     k["stabilizeCascades"] = c.fit == FitMode::Sphere;
     if (c.fit != FitMode::Sphere && c.fit != FitMode::Cascade)
@@ -110,12 +112,12 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     if (depthClamp && !c.pancakeToCasters) out.lacks.push_back("a pancake over the whole slice: Babylon cuts it to the casters' bounds");
     if (c.zExtension == ZExtension::Distance || c.zExtension == ZExtension::None)
         out.lacks.push_back("z extension '" + enumName(c.zExtension) + "': Babylon pancakes or reaches the casters' bounds");
-    k["cascadeBlendPercentage"] = c.blendBand;
+    k["cascadeBlendPercentage"] = round6(c.blendBand);
     if (c.casterFaces != CasterFaces::Front) out.lacks.push_back("caster faces '" + enumName(c.casterFaces) + "': Babylon casts sun-facing faces");
-    const float factor = depthClamp ? 1.5f : 0.5f;
-    if (s.bias.constantUnit == BiasUnit::Depth) k["bias"] = s.bias.constant / factor;
+    const double factor = depthClamp ? 1.5 : 0.5;
+    if (s.bias.constantUnit == BiasUnit::Depth) k["bias"] = round6(double(s.bias.constant) / factor);
     else out.lacks.push_back("a constant bias in metres: Babylon's bias is a share of each box's depth");
-    if (s.bias.normalOffsetUnit == OffsetUnit::Metres) k["normalBias"] = s.bias.normalOffset;
+    if (s.bias.normalOffsetUnit == OffsetUnit::Metres) k["normalBias"] = round6(s.bias.normalOffset);
     else if (s.bias.normalOffset > 0.0f) out.lacks.push_back("normal offset in texels: Babylon's normalBias is metres");
     if (s.bias.slope > 0.0f) out.lacks.push_back("slope-scaled bias");
     if (s.bias.receiverPlane) out.lacks.push_back("receiver-plane bias");

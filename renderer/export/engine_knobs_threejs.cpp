@@ -1,6 +1,7 @@
 // three.js r187's CSM addon (examples/jsm/csm/CSM.js) and WebGLRenderer shadows, as knobs and as
 // shadowtune settings. Line numbers are of node_modules/three 0.187.0 (engines/package-lock.json).
 #include "renderer/export/engine_knobs_detail.h"
+#include "renderer/export/export_common.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,7 +114,7 @@ EngineKnobs threejsKnobsFor(const Settings& s) {
     const CascadeSettings& c = s.cascades;
     k["cascades"] = c.count;
     const float far = c.shadowDistance > 0.0f ? std::min(c.shadowDistance, s.camera.farPlane) : s.camera.farPlane;
-    if (c.shadowDistance > 0.0f) k["maxFar"] = far;
+    if (c.shadowDistance > 0.0f) k["maxFar"] = round6(far);
     switch (c.scheme) {
         case SplitScheme::Uniform: k["mode"] = "uniform"; break;
         case SplitScheme::Logarithmic: k["mode"] = "logarithmic"; break;
@@ -127,20 +128,20 @@ EngineKnobs threejsKnobsFor(const Settings& s) {
             k["mode"] = "custom";
             json breaks = json::array();
             const std::vector<float> splits = presetSplits(s);
-            for (std::size_t i = 1; i + 1 < splits.size(); ++i) breaks.push_back(splits[i] / far);
+            for (std::size_t i = 1; i + 1 < splits.size(); ++i) breaks.push_back(round6(double(splits[i]) / double(far)));
             breaks.push_back(1.0);
             k["breaks"] = breaks;
         }
     }
     k["shadowMapSize"] = c.mapSize;
     const double lightNear = 1.0;
-    const double lightDepth = c.lightDepth > 0.0f ? c.lightDepth : 1999.0;
+    const double lightDepth = c.lightDepth > 0.0f ? round6(c.lightDepth) : 1999.0;
     k["lightNear"] = lightNear;
-    k["lightFar"] = lightNear + lightDepth;
-    if (c.zExtension == ZExtension::Distance) k["lightMargin"] = c.zExtensionDistance + lightNear;
+    k["lightFar"] = round6(lightNear + lightDepth);
+    if (c.zExtension == ZExtension::Distance) k["lightMargin"] = round6(c.zExtensionDistance + lightNear);
     else out.lacks.push_back("z extension '" + enumName(c.zExtension) + "': three.js reaches lightMargin toward the sun");
-    k["shadowBias"] = -double(s.bias.constant) / lightDepth;
-    if (s.bias.normalOffsetUnit == OffsetUnit::Metres) k["normalBias"] = s.bias.normalOffset;
+    k["shadowBias"] = round6(-double(s.bias.constant) / lightDepth) + 0.0;  // + 0.0: no "-0"
+    if (s.bias.normalOffsetUnit == OffsetUnit::Metres) k["normalBias"] = round6(s.bias.normalOffset);
     else if (s.bias.normalOffset > 0.0f) out.lacks.push_back("normal offset in texels: three.js's normalBias is metres");
     if (s.bias.slope > 0.0f) out.lacks.push_back("slope-scaled bias");
     if (s.bias.receiverPlane) out.lacks.push_back("receiver-plane bias");
@@ -156,7 +157,7 @@ EngineKnobs threejsKnobsFor(const Settings& s) {
         case FilterKind::Hard: k["shadowMapType"] = "BasicShadowMap"; break;
         case FilterKind::Pcf2x2: k["radius"] = 0.0; break;  // five taps at one point: the 2x2 compare
         case FilterKind::Vogel:
-            k["radius"] = s.filter.radius;
+            k["radius"] = round6(s.filter.radius);
             if (s.filter.vogelTaps != 5) out.lacks.push_back("Vogel taps other than 5");
             break;
         case FilterKind::Vsm: k["shadowMapType"] = "VSMShadowMap"; break;

@@ -59,5 +59,6 @@ EngineExport exportUnreal(const Settings& s, const PresetFacts& f);
 EngineExport exportBevy(const Settings& s, const PresetFacts& f);
 EngineExport exportThreeJs(const Settings& s, const PresetFacts& f);
 EngineExport exportFilament(const Settings& s, const PresetFacts& f);
+EngineExport exportBabylon(const Settings& s, const PresetFacts& f);
 
 }  // namespace st::xport

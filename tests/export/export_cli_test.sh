@@ -14,7 +14,7 @@ rc() { [[ $(cat "$work/rc") == "$1" ]]; }
 err_has() { grep -qF -- "$1" "$work/stderr"; }
 out_has() { grep -qF -- "$1" "$work/stdout"; }
 
-for engine in godot unity unreal bevy threejs filament; do
+for engine in godot unity unreal bevy threejs filament babylon; do
   run export "$presets/engines/$engine.json" --to "$engine"
   check "$engine: exits 0" rc 0
   check "$engine: three groups" bash -c "grep -qx 'exact:' '$work/stdout' && grep -qx 'approximated:' '$work/stdout' && grep -qx 'no equivalent:' '$work/stdout'"
@@ -28,7 +28,7 @@ check "--json is JSON with the groups" python3 -c "import json,sys; j=json.load(
 
 run export "$presets/default.json" --to cryengine
 check "unknown engine exits 2" rc 2
-check "unknown engine lists the valid ones" err_has "unknown engine 'cryengine'; expected one of: godot, unity, unreal, bevy, threejs, filament"
+check "unknown engine lists the valid ones" err_has "unknown engine 'cryengine'; expected one of: godot, unity, unreal, bevy, threejs, filament, babylon"
 
 run export "$data/bad-count.json" --to godot
 check "invalid preset exits 1" rc 1

@@ -390,7 +390,8 @@ TEST(ExportMathTest, EngineNames) {
     EXPECT_EQ(parseEngine("godot"), Engine::Godot);
     EXPECT_EQ(parseEngine("threejs"), Engine::ThreeJs);
     EXPECT_FALSE(parseEngine("cryengine"));
-    EXPECT_EQ(engineList(), "godot, unity, unreal, bevy, threejs, filament");
+    EXPECT_EQ(parseEngine("babylon"), Engine::Babylon);
+    EXPECT_EQ(engineList(), "godot, unity, unreal, bevy, threejs, filament, babylon");
 }
 
 TEST(ExportMathTest, TextAndJsonListTheThreeGroups) {
