@@ -1,5 +1,6 @@
 // `shadowtune calibrate`: command-line options of the cost-model calibration.
 #include "app/cli/calibrate_command.h"
+#include "app/cli/number_checks.h"
 #include "app/cli/commands.h"
 #include "app/cli/size_option.h"
 #include "metrics/cost_model.h"
@@ -17,7 +18,7 @@ void addCalibrateCommand(CLI::App& cli, int& exitCode) {
         "calibrate", "Fit the cost model on this machine: time a fixed set of presets and write the cost profile");
     cmd->add_option("--out", opt->out, "Profile JSON to write")->capture_default_str();
     cmd->add_option("--frames", opt->frames, "Timed frames per preset (after one untimed frame)")
-        ->check(CLI::Range(1, 1000))
+        ->check(numberIn(1, 1000))
         ->capture_default_str();
     cmd->add_option("--size", *size, "Override every preset's output size, WxH");
     cmd->add_option("--sweeps", opt->sweeps,
@@ -26,12 +27,12 @@ void addCalibrateCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--check", opt->check,
                     "Instead of calibrating, time these sweeps' points and compare them with --profile's modelled cost");
     cmd->add_option("--every", opt->every, "With --check: every k-th point of each sweep")
-        ->check(CLI::Range(1, 100000))
+        ->check(numberIn(1, 100000))
         ->capture_default_str();
     cmd->add_option("--passes", opt->passes,
                     "Time every point this many times, in passes over all of them, and join their frames (the "
                     "machine's speed drifts over minutes)")
-        ->check(CLI::Range(1, 20))
+        ->check(numberIn(1, 20))
         ->capture_default_str();
     cmd->add_option("--profile", opt->profile,
                     "With --check or --refit: the profile (default: the shipped llvmpipe profile)");

@@ -14,5 +14,6 @@ void addCalibrateCommand(CLI::App& cli, int& exitCode);
 void addTuneCommand(CLI::App& cli, int& exitCode);
 void addCheckCommand(CLI::App& cli, int& exitCode);
 void addEngineCheckCommand(CLI::App& cli, int& exitCode);
+void addInitCommand(CLI::App& cli, int& exitCode);
 
 }  // namespace st::app

@@ -1,5 +1,6 @@
 // `shadowtune compare`: command-line options of the comparison of two presets.
 #include "app/cli/commands.h"
+#include "app/cli/number_checks.h"
 #include "app/cli/compare_command.h"
 #include "app/cli/size_option.h"
 
@@ -21,7 +22,7 @@ void addCompareCommand(CLI::App& cli, int& exitCode) {
                   "Measure B with its own scene, camera, light and path instead of A's");
     cmd->add_option("--size", *size, "Output size of both, WxH (default: A's)");
     cmd->add_option("--frames", opt->costFrames, "Timed frames for the cost figures (after one warm-up)")
-        ->check(CLI::Range(1, 1000))
+        ->check(numberIn(1, 1000))
         ->capture_default_str();
     cmd->add_flag("--debug-gl", opt->debugContext, "Debug context; GL errors fail the comparison");
     cmd->callback([opt, size, &exitCode] {

@@ -1,5 +1,6 @@
 // `shadowtune editor`: the interactive tuning window.
 #include "app/cli/commands.h"
+#include "app/cli/number_checks.h"
 #include "app/editor/editor_app.h"
 #include "app/preset_dir.h"
 
@@ -12,7 +13,7 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     auto preset = std::make_shared<std::string>();
     CLI::App* editor = cli.add_subcommand("editor", "Open the interactive editor (needs a display)");
     editor->add_option("preset", *preset, "Preset to open (default: default.json of presets/, or of the installed presets)");
-    editor->add_option("--frames", opt->frames, "Quit after N frames (for scripted runs)")->check(CLI::Range(1, 1000000));
+    editor->add_option("--frames", opt->frames, "Quit after N frames (for scripted runs)")->check(numberIn(1, 1000000));
     editor->add_option("--screenshot", opt->screenshot, "Write the window to this PNG after the last frame");
     editor->add_option("--scene-screenshot", opt->sceneShot, "Write the scene view alone (no panels) after the last frame");
     editor->add_option("--save-as", opt->saveAs, "Save the settings as a preset after the last frame");
@@ -20,7 +21,7 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
         ->expected(2)->delimiter(',');
     editor->add_option("--orbit", opt->orbitDegPerFrame,
                        "DEG: turn the camera around its target by DEG degrees every frame (a scripted moving-camera benchmark)")
-        ->check(CLI::Range(-45.0f, 45.0f));
+        ->check(numberIn(-45.0f, 45.0f));
     editor->add_flag("--preview-path", opt->previewPath,
                      "Start View > Preview path on the first frame; with --frames, keep drawing until it plays, then print its line");
     editor->add_option("--layout-report", opt->layoutReport,

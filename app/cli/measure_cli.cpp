@@ -1,5 +1,6 @@
 // `shadowtune measure`: command-line options of the measurement command.
 #include "app/cli/commands.h"
+#include "app/cli/number_checks.h"
 #include "app/cli/warning_options.h"
 #include "app/cli/measure_command.h"
 #include "app/cli/size_option.h"
@@ -39,7 +40,7 @@ void addMeasureCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--out", args->opt.outDir, "Output folder; each preset gets OUT/<name>/")->capture_default_str();
     cmd->add_option("--size", args->size, "Override the output size, WxH (e.g. 1280x720)");
     cmd->add_option("--frames", args->opt.costFrames, "Timed frames for the cost figures (after one warm-up)")
-        ->check(CLI::Range(1, 1000))
+        ->check(numberIn(1, 1000))
         ->capture_default_str();
     cmd->add_option("--profile", args->opt.costProfile,
                     "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");

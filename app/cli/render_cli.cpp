@@ -1,5 +1,6 @@
 // `shadowtune render`: command-line options of headless replay.
 #include "app/cli/commands.h"
+#include "app/cli/number_checks.h"
 #include "app/cli/render_command.h"
 #include "app/cli/warning_options.h"
 #include "renderer/settings/enum_names.h"
@@ -62,7 +63,7 @@ void addRenderCommand(CLI::App& cli, int& exitCode) {
                        "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");
     render->add_flag("--debug-gl", args->opt.debugContext, "Debug context; GL errors fail the preset");
     render->add_option("--frames", args->opt.frames, "Time N frames of each preset (after an untimed warm-up, every map redrawn) and print median, minimum and maximum")
-        ->check(CLI::Range(1, 10000));
+        ->check(numberIn(1, 10000));
     addWarningOptions(*render, args->opt.warningLimits);
     render->callback([args, &exitCode] { exitCode = applyOverrides(*args) ? runRender(args->opt) : 2; });
 }

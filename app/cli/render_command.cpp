@@ -2,6 +2,7 @@
 
 #include "app/cost_profile_file.h"
 #include "app/cli/preset_batch.h"
+#include "app/scene_preset.h"
 
 #include "metrics/cost_model.h"
 #include "metrics/measure_session.h"
@@ -130,11 +131,38 @@ PresetWriter renderOne(const RenderOptions& opt, const metrics::CostProfile& pro
     };
 }
 
+// A .gltf or .glb given to render becomes a preset of its own (app/scene_preset.h), written as
+// OUT/presets/<stem>.json (OUT/<stem>.json holds the frame's statistics), so the picture can be
+// replayed and edited.
+std::vector<fs::path> presetsOf(const RenderOptions& opt) {
+    std::vector<fs::path> presets;
+    for (const fs::path& p : opt.presets) {
+        if (!isGltfPath(p)) {
+            presets.push_back(p);
+            continue;
+        }
+        const fs::path dir = opt.outDir / "presets";
+        makeOutputDir(dir);
+        const fs::path preset = dir / (p.stem().string() + ".json");
+        savePresetAtomic(presetForScene(p, dir), preset);
+        std::printf("wrote %s for %s\n", preset.string().c_str(), p.string().c_str());
+        presets.push_back(preset);
+    }
+    return presets;
+}
+
 }  // namespace
 
-int runRender(const RenderOptions& opt) {
-    const auto profile = loadCostProfileOrReport(opt.costProfile);
+int runRender(const RenderOptions& given) {
+    const auto profile = loadCostProfileOrReport(given.costProfile);
     if (!profile) return 1;
+    RenderOptions opt = given;
+    try {
+        opt.presets = presetsOf(given);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
     return runHeadless({opt.presets, opt.outDir, opt.debugContext}, [&opt, profile]() -> PresetWork {
         auto cache = std::make_shared<SceneCache<>>();
         auto pass = std::make_shared<MeasurePass>();

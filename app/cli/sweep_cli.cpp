@@ -1,5 +1,6 @@
 // `shadowtune sweep`: command-line options of the sweep command.
 #include "app/cli/commands.h"
+#include "app/cli/number_checks.h"
 #include "app/cli/sweep_command.h"
 #include "sweep/sweep_results.h"
 
@@ -25,9 +26,9 @@ void addSweepCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--profile", opt->costProfile,
                     "Cost profile of the modelled cost (default: the shipped llvmpipe profile; `shadowtune calibrate` writes one)");
     cmd->add_option("--stop-after", opt->stopAfter, "Measure at most N new points, then stop as Ctrl-C would")
-        ->check(CLI::NonNegativeNumber);
+        ->check(nonNegativeNumber());
     cmd->add_option("--frames", opt->costFrames, "Timed frames per point for the cost figures (after one warm-up)")
-        ->check(CLI::Range(1, 1000))
+        ->check(numberIn(1, 1000))
         ->capture_default_str();
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the sweep");
     cmd->callback([opt, &exitCode] { exitCode = runSweepCommand(*opt); });

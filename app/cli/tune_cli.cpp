@@ -1,5 +1,6 @@
 // `shadowtune tune`: command-line options of the tuner.
 #include "app/cli/commands.h"
+#include "app/cli/number_checks.h"
 #include "app/cli/size_option.h"
 #include "app/cli/tune_command.h"
 #include "sweep/sweep_results.h"
@@ -35,9 +36,9 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("preset", opt->preset, "Preset to tune (its scene, camera, light and size stay)")->required();
     cmd->add_option("--out", opt->outDir, "Output folder (tuned.json, front/, explain.md); rerun to resume")->required();
     CLI::Option* ms = cmd->add_option("--budget-ms", *budgetMs, "Modelled frame cost at most this (ms)")
-                          ->check(CLI::PositiveNumber);
+                          ->check(positiveNumber());
     CLI::Option* mib = cmd->add_option("--budget-mib", *budgetMiB, "Shadow and filter map memory at most this (MiB)")
-                           ->check(CLI::PositiveNumber);
+                           ->check(positiveNumber());
     cmd->add_option("--budget-from", opt->budgetFrom,
                     "Reference presets: their method on this scene and views sets the budget (the cheapest's cost and "
                     "memory, unless --budget-ms/--budget-mib are given)")
@@ -62,19 +63,19 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                   "Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point: front/ "
                   "then charts cost against error from the cheapest to the budget (docs/tuning.md#front)");
     cmd->add_option("--views", opt->views, "Views: the preset's camera, then viewpoints around it")
-        ->check(CLI::Range(1, 16))
+        ->check(numberIn(1, 16))
         ->capture_default_str();
     cmd->add_option("--hold-out-every", opt->holdOutEvery,
                     "Every k-th view after the first is held out and only scores the result (0: none)")
-        ->check(CLI::Range(0, 16))
+        ->check(numberIn(0, 16))
         ->capture_default_str();
     cmd->add_option("--seed", opt->seed, "Seed of the search's order and restarts: the same seed gives the same tuned.json")
         ->capture_default_str();
     cmd->add_option("--evaluations", opt->evaluations, "Evaluations the search may make")
-        ->check(CLI::Range(1, 100000))
+        ->check(numberIn(1, 100000))
         ->capture_default_str();
     cmd->add_option("--stop-after", opt->stopAfter, "Make at most N new evaluations, then stop as Ctrl-C would")
-        ->check(CLI::NonNegativeNumber);
+        ->check(nonNegativeNumber());
     cmd->add_option("--profile", opt->costProfile,
                     "Cost profile of the modelled cost (default: the shipped llvmpipe profile)");
     cmd->add_option("--shard", *shard,
@@ -82,7 +83,7 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "measures its share of every round, and shard 1 writes the results (docs/tuning.md#shards)");
     cmd->add_option("--shard-wait", opt->shardWaitSeconds,
                     "Seconds to wait for another shard's measurement before measuring it here")
-        ->check(CLI::PositiveNumber)
+        ->check(positiveNumber())
         ->capture_default_str();
     cmd->add_flag("--shared-renderer", opt->sharedRenderer,
                   "Measure every view with one renderer, redrawing every map at each change of view (the "

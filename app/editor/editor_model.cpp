@@ -1,6 +1,7 @@
 #include "app/editor/editor_model.h"
 
 #include "app/editor/preset_list.h"
+#include "app/scene_preset.h"
 #include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
 #include "renderer/settings/validation.h"
@@ -16,8 +17,15 @@ namespace fs = std::filesystem;
 
 EditorModel::EditorModel(const ModelOptions& opt) : opt_(opt) {
     presetPath_ = opt.preset ? *opt.preset : opt.presetDir / "default.json";
-    if (opt.preset || fs::exists(presetPath_)) settings_ = loadPreset(presetPath_);  // a bad file given by name fails
-    else presetPath_.clear();
+    if (opt.preset && isGltfPath(*opt.preset)) {
+        // A scene of the user's own: a new preset for it (app/scene_preset.h), not saved yet.
+        settings_ = presetForScene(*opt.preset, {});
+        presetPath_.clear();
+    } else if (opt.preset || fs::exists(presetPath_)) {
+        settings_ = loadPreset(presetPath_);  // a bad file given by name fails
+    } else {
+        presetPath_.clear();
+    }
     valid_ = settings_;
     loadScene(settings_.scene, {.ground = settings_.ground});
     ui_ = std::make_unique<ui::EditorUi>(opt.presetDir);
