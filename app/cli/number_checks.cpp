@@ -7,7 +7,7 @@
 namespace st::app {
 namespace {
 
-std::string plain(double v) {
+std::string plainNumber(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", v);
     return text;
@@ -22,7 +22,7 @@ std::string readFinite(const std::string& text, double& value) {
     return "";
 }
 
-CLI::Validator check(const std::string& description, double lo, bool loOpen, double hi) {
+CLI::Validator finiteCheck(const std::string& description, double lo, bool loOpen, double hi) {
     return CLI::Validator(
         [=](std::string& text) -> std::string {
             double v = 0.0;
@@ -36,10 +36,10 @@ CLI::Validator check(const std::string& description, double lo, bool loOpen, dou
 
 }  // namespace
 
-CLI::Validator positiveNumber() { return check("(0, inf): a number above 0", 0.0, true, HUGE_VAL); }
+CLI::Validator positiveNumber() { return finiteCheck("(0, inf): a number above 0", 0.0, true, HUGE_VAL); }
 
-CLI::Validator nonNegativeNumber() { return check("[0, inf): a number of at least 0", 0.0, false, HUGE_VAL); }
+CLI::Validator nonNegativeNumber() { return finiteCheck("[0, inf): a number of at least 0", 0.0, false, HUGE_VAL); }
 
-CLI::Validator numberIn(double lo, double hi) { return check(plain(lo) + " .. " + plain(hi), lo, false, hi); }
+CLI::Validator numberIn(double lo, double hi) { return finiteCheck(plainNumber(lo) + " .. " + plainNumber(hi), lo, false, hi); }
 
 }  // namespace st::app
