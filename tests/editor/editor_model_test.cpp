@@ -155,6 +155,17 @@ TEST(EditorModelTest, AFlyDragAndAnOrbitDragAreOneUndoStepEachAndTheOrbitKeepsTh
     EXPECT_EQ(model.ui().undoSteps(), 2u);
 }
 
+// Every camera move stops the motion preview; one that is off must keep its generation, or the
+// viewport forgets the previous frame each time and a moving camera never renders at the
+// interactive scale (issue 39 #1: --orbit on truck-town rendered at 100 %, 1.4 fps).
+TEST(EditorModelTest, AMovingCameraWithNoPreviewKeepsThePreviewsGeneration) {
+    EditorModel model(yardOptions());
+    const auto generation = model.preview().generation();
+    for (int i = 0; i < 3; ++i) model.applyCamera(CameraInput{.scriptedOrbitDeg = 2.0f});
+    EXPECT_NE(model.valid().camera, EditorModel(yardOptions()).valid().camera) << "the camera moved";
+    EXPECT_EQ(model.preview().generation(), generation);
+}
+
 TEST(EditorModelTest, MessagesGoWithTheChangeThatMadeThemStale) {
     EditorModel model(yardOptions());
     model.setRenderMessage("far plane before near plane");
