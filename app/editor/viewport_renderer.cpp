@@ -173,7 +173,10 @@ void ViewportRenderer::updateAccuracy(const EditorModel& model, const ViewportFr
     s.output.width = sceneWidth_;
     s.output.height = sceneHeight_;
     accuracy_->update(f.time, f.accuracyWanted, rendered, *renderer_, s, model.scene());
-    if (f.errorOverlay && !model.swapped() && !model.splitShown() && accuracy_->overlay())
+    // Over the shaded view only: the debug views (cascades, density, side) have colours of their own
+    // that the overlay's red and blue would be read as (issue 39 #3).
+    const bool shaded = model.valid().output.view == View::Shaded;
+    if (f.errorOverlay && shaded && !model.swapped() && !model.splitShown() && accuracy_->overlay())
         ui::drawErrorOverlay(reinterpret_cast<ImTextureID>(std::uintptr_t(accuracy_->overlay())), model.scenePos(),
                              model.sceneSize());
 }
