@@ -21,7 +21,7 @@ constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end
 void writeStatus(const std::filesystem::path& file, const EditorWindow& window, const EditorSession& session, bool idle) {
     nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
                            {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()},
-                           {"title", window.title()}};
+                           {"title", window.title()}, {"message", session.message()}};
     const CameraSettings& c = session.camera();
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}}};
     writeTextAtomic(file, j.dump() + "\n");

@@ -36,6 +36,7 @@ public:
     const FrameActivity& activity() const { return activity_; }
     int framesDrawn() const { return times_.frames(); }
     const CameraSettings& camera() const { return model_->settings().camera; }
+    std::string message() const { return model_->message(); }  // the status lines the panels show
     bool splitShown() const { return model_->splitShown(); }
     // --preview-path: the preview has not started yet (it starts on the second frame) or still renders.
     bool previewPending() const {

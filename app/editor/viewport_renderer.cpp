@@ -1,5 +1,7 @@
 #include "app/editor/viewport_renderer.h"
 
+#include "metrics/map_warnings.h"
+
 #include "app/cost_profile_file.h"
 #include "app/editor/side_split_handles.h"
 #include "renderer/image/image_io.h"
@@ -123,6 +125,11 @@ bool ViewportRenderer::renderScene(EditorModel& model, const ViewportFrame& f, S
         std::string message;
         renderA(model, f, width, height, message);
         heldRendered_ = renderViews(model, in.live, interactive ? scale : 1.0, message);
+        // Casters the light box cuts off lose their shadows: said where the artist looks, as
+        // `render` prints it (issue 39 #6), not only as the figures panel's orange "!".
+        if (heldRendered_)
+            for (const std::string& w : metrics::zExtensionWarnings(stats_))
+                message += (message.empty() ? "" : "\n") + std::string("warning: ") + w;
         model.setRenderMessage(message);
         // The GL work is queued, not done, when the calls return: finish it, so the time is the
         // scene's and not the panels' (on llvmpipe the swap would wait for it anyway).

@@ -135,6 +135,22 @@ TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     fs::remove_all(dir);
 }
 
+// Issue 39 #6: a light box that cuts casters off says so in the editor, as `render` warns, not only as
+// the figures panel's orange "!". The status file carries the lines the panels show.
+TEST(EditorSmokeTest, CutCastersAreWarnedWhereTheArtistLooks) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run missing (scripts/setup.sh installs xvfb)";
+    fs::path dir = fs::temp_directory_path() / ("st-cut-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path status = dir / "status.json", log = dir / "log.txt";
+    const std::string editor = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" ST_SHADOWTUNE
+                               "' editor '" ST_PRESET_DIR "/scenarios/tower-no-extension.json' --frames 3 --status-file '" +
+                               status.string() + "' > '" + log.string() + "' 2>&1";
+    ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << log;
+    const std::string text = readText(status);
+    EXPECT_NE(text.find("warning: cascade 0: z-extension 0 m cuts casters up to"), std::string::npos) << text;
+    fs::remove_all(dir);
+}
+
 // Issue 13 #1: --save-as into another folder used to keep "../../../shared/assets/..." as it was,
 // so `render` of the saved file failed with "scene file not found".
 TEST(EditorSmokeTest, SaveAsIntoAnotherFolderWritesAPresetThatRenders) {
