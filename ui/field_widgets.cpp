@@ -59,7 +59,7 @@ std::optional<FieldValue> settle(FieldEdits& edits, const std::string& key, bool
 bool refuse(FieldEdits& edits, const std::string& key, const FieldInfo& field, double value) {
     std::string problem = typedValueProblem(field, value);
     if (problem.empty()) {
-        edits.refused.erase(key);
+        edits.refused.clear();  // a value taken: every refusal on screen is stale (issue 39 #10)
         return false;
     }
     edits.refused[key] = std::move(problem);
@@ -90,7 +90,7 @@ bool editFloat(const FieldInfo& field, Settings& s, FieldEdits& edits) {
     if (!settled) return false;
     const float v = std::get<float>(*settled);
     if (typed && refuse(edits, key, field, v)) return false;
-    if (!typed) edits.refused.erase(key);
+    if (!typed) edits.refused.clear();  // a value taken: every refusal on screen is stale
     return storeField(field, s, static_cast<float>(clampToField(field, v)));
 }
 
@@ -111,7 +111,7 @@ bool editInt(const FieldInfo& field, Settings& s, FieldEdits& edits) {
     if (!settled) return false;
     const int v = std::get<int>(*settled);
     if (typed && refuse(edits, key, field, v)) return false;
-    if (!typed) edits.refused.erase(key);
+    if (!typed) edits.refused.clear();  // a value taken: every refusal on screen is stale
     return storeField(field, s, legalInt(field, v, *stored));
 }
 
@@ -165,7 +165,7 @@ bool editVec3(const FieldInfo& field, Settings& s, FieldEdits& edits) {
         if (typed && refuse(edits, key, field, v[i])) return false;
         v[i] = static_cast<float>(clampToField(field, v[i]));
     }
-    if (!typed) edits.refused.erase(key);
+    if (!typed) edits.refused.clear();  // a value taken: every refusal on screen is stale
     return storeField(field, s, v);
 }
 
@@ -325,7 +325,7 @@ bool editFloatElements(const FieldInfo& field, std::vector<float>& values, ItemR
         if (const auto settled = settle(edits, key, moved, value, typed)) {
             const float v = std::get<float>(*settled);
             if (!typed || !refuse(edits, key, field, v)) {
-                if (!typed) edits.refused.erase(key);
+                if (!typed) edits.refused.clear();  // a value taken: every refusal on screen is stale
                 values[i] = static_cast<float>(clampToField(field, v));
                 changed = true;
             }

@@ -204,6 +204,19 @@ TEST_F(EditorUiTest, ANegativeFilterSizeTypedIntoItsBoxIsRefused) {
     EXPECT_FALSE(d.drawn("filter.size#refused"));
 }
 
+// Issue 39 #10: "95 deg is outside -90 .. 90 deg" stayed on screen after edits of other fields.
+TEST_F(EditorUiTest, ARefusalGoesWhenAnotherFieldTakesAValue) {
+    d.ctrlClick(d.rect("light.elevation").center());  // Ctrl+click turns a slider into a text field
+    d.typeText("95");
+    d.pressKey(kKeyEnter);
+    ASSERT_TRUE(d.drawn("light.elevation#refused"));
+    d.ctrlClick(d.rect("light.azimuth").center());
+    d.typeText("40");
+    d.pressKey(kKeyEnter);
+    EXPECT_EQ(d.s.light.azimuth, 40.0f);
+    EXPECT_FALSE(d.drawn("light.elevation#refused")) << "another field took a value: the refusal is stale";
+}
+
 TEST_F(EditorUiTest, FieldsTheModeDoesNotUseAreGreyed) {
     d.s.cascades.scheme = SplitScheme::Uniform;
     d.s.filter.kind = FilterKind::Pcf2x2;
