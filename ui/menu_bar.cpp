@@ -9,6 +9,12 @@
 namespace st::ui {
 namespace {
 
+// Escape closes the open menu (issue 39 #10: it left it open; keyboard navigation is off, so
+// ImGui does not do it itself). Called inside an open menu, before its EndMenu.
+void closeOnEscape() {
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
+}
+
 void fileMenu(UiFrame& f) {
     const bool open = ImGui::BeginMenu("File");
     recordItem(f.state.rects, "menu.file");
@@ -21,6 +27,7 @@ void fileMenu(UiFrame& f) {
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(f);
     if (ImGui::MenuItem("Quit")) requestQuitFrom(f.state, isDirty(f.state.doc, f.s));
+    closeOnEscape();
     ImGui::EndMenu();
 }
 
@@ -28,6 +35,7 @@ void editMenu(UiFrame& f) {
     if (!ImGui::BeginMenu("Edit")) return;
     if (ImGui::MenuItem("Undo", "Ctrl+Z", false, f.state.undo.canUndo())) undoEdit(f);
     if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, f.state.undo.canRedo())) redoEdit(f);
+    closeOnEscape();
     ImGui::EndMenu();
 }
 
@@ -76,6 +84,7 @@ void viewMenu(UiFrame& f) {
     ImGui::MenuItem("Side view", nullptr, &f.state.showSideView);
     ImGui::MenuItem("Accuracy", nullptr, &f.state.showAccuracy);
     ImGui::MenuItem("Help", "F1", &f.state.showHelp);
+    closeOnEscape();
     ImGui::EndMenu();
 }
 

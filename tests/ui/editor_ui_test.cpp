@@ -217,6 +217,17 @@ TEST_F(EditorUiTest, ARefusalGoesWhenAnotherFieldTakesAValue) {
     EXPECT_FALSE(d.drawn("light.elevation#refused")) << "another field took a value: the refusal is stale";
 }
 
+// Issue 39 #10: Escape left a menu open.
+TEST_F(EditorUiTest, EscapeClosesAnOpenMenu) {
+    d.frame();
+    d.click("menu.view");
+    d.frame();
+    ASSERT_TRUE(d.drawn("menu.hidePanels")) << "the View menu is open";
+    d.pressKey(kKeyEscape);
+    d.frame();
+    EXPECT_FALSE(d.drawn("menu.hidePanels"));
+}
+
 TEST_F(EditorUiTest, FieldsTheModeDoesNotUseAreGreyed) {
     d.s.cascades.scheme = SplitScheme::Uniform;
     d.s.filter.kind = FilterKind::Pcf2x2;
