@@ -127,6 +127,7 @@ struct ShortcutKeys {
     int help = 290;   // F1: help window
     int open = 79;    // Ctrl+O: File > Open
     int hidePanels = 72;  // H: hide every panel, the scene fills the window
+    int firstView = 49;   // 1..6: output.view shaded, cascades, shadow, texel-density, side, texel-grid
 };
 
 // Draws the Accuracy panel's error overlay (an RGBA texture, top row first, straight alpha) over

@@ -14,7 +14,7 @@ struct Shortcut {
     const char* action;
 };
 
-constexpr std::array<Shortcut, 15> kShortcuts{{
+constexpr std::array<Shortcut, 16> kShortcuts{{
     {"Right mouse + W A S D", "fly the camera"},
     {"Right mouse + Q / E", "fly down / up"},
     {"Mouse wheel", "fly speed"},
@@ -22,6 +22,7 @@ constexpr std::array<Shortcut, 15> kShortcuts{{
     {"Alt + left drag", "orbit around the point under the cursor"},
     {"F", "frame the scene (near/far kept)"},
     {"Tab", "swap the side view with the main view"},
+    {"1 .. 6", "view: shaded, cascades, shadow, texel density, side, texel grid"},
     {"Drag / wheel on side view", "orbit / zoom the side camera"},
     {"Ctrl+Z", "undo a settings change"},
     {"Ctrl+Shift+Z", "redo"},

@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 namespace st::ui {
 namespace {
 
@@ -45,7 +47,8 @@ void debugViewItems(UiFrame& f) {
     const FieldInfo* view = findField("output.view");
     for (std::size_t i = 0; view && i < EnumNames<View>::names.size(); ++i) {
         const std::string name(EnumNames<View>::names[i]);
-        if (ImGui::MenuItem(name.c_str(), nullptr, shaderCode(f.s.output.view) == int(i)))
+        const std::string key = std::to_string(i + 1);
+        if (ImGui::MenuItem(name.c_str(), key.c_str(), shaderCode(f.s.output.view) == int(i)))
             f.edited = storeField(*view, f.s, int(i)) || f.edited;
         recordItem(f.state.rects, "menu.view." + name);
     }

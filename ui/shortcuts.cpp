@@ -1,6 +1,7 @@
 // Keyboard shortcuts of the UI layer. Camera flying (RMB + WASD/QE, wheel, MMB pan) belongs to
 // the app; the discrete shortcuts live here so menus, buttons and keys share one code path.
 #include "ui/document_actions.h"
+#include "ui/field_widgets.h"
 #include "ui/panels.h"
 
 #include <imgui.h>
@@ -34,6 +35,10 @@ void viewShortcuts(UiFrame& f, const ImGuiIO& io) {
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Tab)) && !f.state.showOpen) f.req.swapSideView = true;
     if (pressed(f.state.keys.help)) f.state.showHelp = !f.state.showHelp;
     if (pressed(f.state.keys.hidePanels)) f.state.prefs.panelsHidden = !f.state.prefs.panelsHidden;
+    // 1..6: the debug views, as View's menu items set them (issue 39 #10: no keys for them).
+    if (const FieldInfo* view = findField("output.view"))
+        for (int i = 0; i < int(view->enumNames.size()); ++i)
+            if (pressed(f.state.keys.firstView + i)) f.edited = storeField(*view, f.s, i) || f.edited;
 }
 
 }  // namespace

@@ -228,6 +228,17 @@ TEST_F(EditorUiTest, EscapeClosesAnOpenMenu) {
     EXPECT_FALSE(d.drawn("menu.hidePanels"));
 }
 
+// Issue 39 #10: keys for the debug views, as View's menu sets them.
+TEST_F(EditorUiTest, NumberKeysPickTheDebugViews) {
+    d.frame();
+    d.pressKey(50);  // 2
+    EXPECT_EQ(d.s.output.view, View::Cascades);
+    d.pressKey(52);  // 4
+    EXPECT_EQ(d.s.output.view, View::TexelDensity);
+    d.pressKey(49);  // 1
+    EXPECT_EQ(d.s.output.view, View::Shaded);
+}
+
 TEST_F(EditorUiTest, FieldsTheModeDoesNotUseAreGreyed) {
     d.s.cascades.scheme = SplitScheme::Uniform;
     d.s.filter.kind = FilterKind::Pcf2x2;
