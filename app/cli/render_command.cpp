@@ -111,7 +111,7 @@ PresetWriter renderOne(const RenderOptions& opt, const metrics::CostProfile& pro
     Rgba8Image img{r.width(), r.height(), r.readRgba8()};
     stats.warnings = metrics::frameWarnings(r, pass, s, stats, opt.warningLimits);
     for (const std::string& w : stats.warnings) std::fprintf(stderr, "%s: warning: %s\n", preset.string().c_str(), w.c_str());
-    return [outDir = opt.outDir, preset, s, stats, img = std::move(img)] {
+    return [outDir = opt.outDir, preset, s, stats, model, img = std::move(img)] {
         const std::string stem = preset.stem().string();
         const fs::path png = outDir / (stem + ".png");
         writeImageAtomic(png, img);
@@ -122,11 +122,23 @@ PresetWriter renderOne(const RenderOptions& opt, const metrics::CostProfile& pro
             maps.clear();
             for (int size : s.cascades.mapSizes) maps += (maps.empty() ? "" : "+") + std::to_string(size) + "²";
         }
-        std::printf("wrote %s (%dx%d, view %s, %s maps (%s), modelled cost %.1f ms (shadow %.1f); measured %s, main "
-                    "%.1f ms)\n",
+        // One cost figure, labelled: the model with every pass it prices, and the GPU timers with every
+        // pass they timed (issue 39 #4: the filter pass was in the model and missing from the timers).
+        std::string timers = shadowTimeText(stats);
+        char pass[64];
+        if (stats.gpuFilterMs > 0.0) {
+            std::snprintf(pass, sizeof pass, ", filter %.1f ms", stats.gpuFilterMs);
+            timers += pass;
+        }
+        if (const double screen = stats.gpuScreenShadowMs + stats.gpuScreenBlurMs; screen > 0.0) {
+            std::snprintf(pass, sizeof pass, ", screen mask %.1f ms", screen);
+            timers += pass;
+        }
+        std::printf("wrote %s (%dx%d, view %s, %s maps (%s), modelled cost %.1f ms (shadow %.1f, filter %.1f, main %.1f); "
+                    "GPU timers: %s, main %.1f ms)\n",
                     png.string().c_str(), img.width, img.height, enumName(s.output.view).c_str(), maps.c_str(),
-                    enumName(s.cascades.storage).c_str(), stats.modelMs, stats.modelShadowMs,
-                    shadowTimeText(stats).c_str(), stats.gpuMainMs);
+                    enumName(s.cascades.storage).c_str(), stats.modelMs, stats.modelShadowMs, model.filterMs, model.mainMs,
+                    timers.c_str(), stats.gpuMainMs);
         std::fflush(stdout);
     };
 }
