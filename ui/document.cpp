@@ -41,7 +41,9 @@ bool saveDocument(Document& doc, const Settings& s, const std::filesystem::path&
     try {
         const Settings saved = documentPart(doc, s);
         // A URL stays as it is; a path follows the file into its folder, as the scene does.
-        const std::string schema = doc.file.empty() ? doc.schema : rebaseSchemaRef(doc.schema, folderOf(doc.file), folderOf(file));
+        std::string schema = doc.file.empty() ? doc.schema : rebaseSchemaRef(doc.schema, folderOf(doc.file), folderOf(file));
+        // A preset without one gets the repository's, wherever it is saved (issue 39 #10).
+        if (schema.empty()) schema = defaultSchemaRef(file, doc.schemaHint);
         const std::filesystem::path folder = file.parent_path();
         std::error_code ec;
         const bool created = !folder.empty() && !std::filesystem::exists(folder, ec) && std::filesystem::create_directories(folder, ec);

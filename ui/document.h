@@ -17,6 +17,7 @@ struct Document {
     std::vector<std::string> errors;   // of the last failed load or save
     std::string status;                // of the last successful one: "Saved presets/a.json"
     std::string schema;                // the file's "$schema" (relative to its folder), kept by saves
+    std::filesystem::path schemaHint;  // where a preset without one finds schema/ (the presets folder)
     // The debug view (output.view) is editor state: off, changing it neither dirties the document
     // nor is saved; the file keeps the view it had (issue 13 #4).
     bool saveViewWithPreset = false;

@@ -43,6 +43,7 @@ void loadNow(UiFrame& f, const std::filesystem::path& file) {
         f.state.doc.status.clear();
         return;
     }
+    next.schemaHint = f.state.doc.schemaHint;
     f.state.doc = std::move(next);
     f.s = std::move(loaded);
     resetHistory(f.state);

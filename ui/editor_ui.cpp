@@ -1,5 +1,7 @@
 #include "ui/editor_ui.h"
 
+#include "renderer/settings/preset_paths.h"
+
 #include "ui/document_actions.h"
 #include "ui/field_rules.h"
 #include "ui/field_widgets.h"
@@ -73,6 +75,7 @@ void finishFrame(UiFrame& f, const Settings& atStart) {
 
 EditorUi::EditorUi(std::filesystem::path presetDir, ShortcutKeys keys) : state_(std::make_unique<UiState>()) {
     state_->presetDir = std::move(presetDir);
+    state_->doc.schemaHint = state_->presetDir;
     state_->keys = keys;
 }
 
@@ -99,6 +102,8 @@ UiRequests EditorUi::draw(Settings& s, const UiInputs& in) {
 
 void EditorUi::setDocument(const Settings& clean, std::filesystem::path file) {
     state_->doc = Document{std::move(file), clean, {}, {}};
+    state_->doc.schema = state_->doc.file.empty() ? "" : presetSchemaRef(state_->doc.file);
+    state_->doc.schemaHint = state_->presetDir;
     state_->dirty = false;
     if (!state_->doc.file.empty()) state_->saveAsText = state_->doc.file.string();
     resetHistory(*state_);

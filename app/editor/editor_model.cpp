@@ -204,7 +204,8 @@ void EditorModel::savePresetAs(const fs::path& file, int width, int height) {
     s.output.height = height;
     // Relative scene paths follow the file (issue 13 #1), and so does the "$schema" of the preset
     // open, as File > Save as keeps it (ui::saveDocument, issue 21 #8): one write.
-    const std::string schema = presetPath_.empty() ? "" : presetSchemaRef(presetPath_);
+    std::string schema = presetPath_.empty() ? "" : presetSchemaRef(presetPath_);
+    if (schema.empty()) schema = defaultSchemaRef(sceneBase() / "untitled.json", opt_.presetDir);  // relative to sceneBase()
     savePresetRebased(s, sceneBase(), file, schema);
     presetPath_ = file;
 }

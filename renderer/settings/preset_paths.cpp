@@ -47,6 +47,19 @@ std::string presetSchemaRef(const fs::path& file) {
     }
 }
 
+std::string defaultSchemaRef(const fs::path& file, const fs::path& hint) {
+    std::error_code ec;
+    const fs::path folder = fs::absolute(folderOf(file), ec).lexically_normal();
+    for (const fs::path& start : {folder, hint.empty() ? fs::path() : fs::absolute(hint, ec).lexically_normal()}) {
+        for (fs::path dir = start; !dir.empty(); dir = dir.parent_path()) {
+            const fs::path schema = dir / "schema" / "preset.schema.json";
+            if (fs::is_regular_file(schema, ec)) return schema.lexically_relative(folder).generic_string();
+            if (dir == dir.parent_path()) break;
+        }
+    }
+    return "";
+}
+
 std::string rebaseSchemaRef(const std::string& ref, const fs::path& fromDir, const fs::path& toDir) {
     return ref.find("://") != std::string::npos ? ref : rebaseFileReference(ref, fromDir, toDir);
 }

@@ -33,6 +33,10 @@ void savePresetRebased(const Settings& s, const std::filesystem::path& fromDir, 
 // setting (Settings has no field for it), but editors find the JSON Schema through it, so a save
 // of the preset elsewhere keeps it (rebaseSchemaRef).
 std::string presetSchemaRef(const std::filesystem::path& file);
+// A "$schema" for a preset saved as `file` that has none yet: schema/preset.schema.json of the
+// nearest folder above `file` that holds one, else above `hint` (the editor's presets folder),
+// relative to `file`'s folder; "" when neither has one.
+std::string defaultSchemaRef(const std::filesystem::path& file, const std::filesystem::path& hint = {});
 
 // A "$schema" written in a preset in `fromDir`, for a preset in `toDir`: a URL stays as it is, a
 // path is rebased as the scene is (rebaseFileReference).

@@ -59,3 +59,22 @@ TEST_F(PresetPathsFileTest, TheSchemaAPresetNamesIsReadAndRebasedLikeTheScene) {
     EXPECT_EQ(rebaseSchemaRef("https://example.org/preset.schema.json", "/a/b", "/c"), "https://example.org/preset.schema.json");
     EXPECT_EQ(rebaseSchemaRef("", "/a/b", "/c"), "");
 }
+
+namespace st {
+namespace {
+
+// Issue 39 #10: a preset saved into another folder lacked "$schema" when the preset open had none.
+TEST_F(PresetPathsFileTest, APresetWithoutASchemaGetsTheNearestOneAboveItOrAboveTheHint) {
+    fs::create_directories(dir / "repo" / "schema");
+    fs::create_directories(dir / "repo" / "presets" / "scenes");
+    fs::create_directories(dir / "elsewhere" / "deep");
+    std::ofstream(dir / "repo" / "schema" / "preset.schema.json") << "{}\n";
+    EXPECT_EQ(defaultSchemaRef(dir / "repo" / "presets" / "scenes" / "a.json"), "../../schema/preset.schema.json");
+    EXPECT_EQ(defaultSchemaRef(dir / "elsewhere" / "deep" / "b.json"), "") << "no schema above, no hint";
+    const std::string ref = defaultSchemaRef(dir / "elsewhere" / "deep" / "b.json", dir / "repo" / "presets");
+    EXPECT_EQ(ref, "../../repo/schema/preset.schema.json");
+    EXPECT_TRUE(fs::exists(dir / "elsewhere" / "deep" / ref));
+}
+
+}  // namespace
+}  // namespace st
