@@ -1,5 +1,7 @@
 #include "tune/tune_run.h"
 
+#include "tune/tune_engine.h"
+
 #include "metrics/cost.h"
 #include "metrics/figure_table.h"
 #include "renderer/image/image_io.h"
@@ -200,6 +202,10 @@ public:
         const auto t0 = std::chrono::steady_clock::now();
         input_ = loadPreset(opt_.preset);
         if (opt_.size) std::tie(input_.output.width, input_.output.height) = *opt_.size;
+        if (opt_.engine) {  // what the engine makes of the preset: the search starts there
+            input_ = ontoEngine(*opt_.engine, input_);
+            say("tuning for " + xport::webEngineName(*opt_.engine) + ": its knobs only (docs/engines.md)");
+        }
         presetDir_ = fs::absolute(opt_.preset).parent_path();
         views_ = tuneViews(input_, opt_.views, opt_.holdOutEvery);
         references();
@@ -265,10 +271,12 @@ private:
         so.progress = [this](const SearchProgress& p) { progress(p); };
         if (opt_.shard.sharded()) so.plan = [this](const Settings& from, const std::vector<Settings>& next) { plan(from, next); };
         so.screen = [this](const Settings& s) { return judge(measured(screenSize(s), "screen"), objective_); };
-        const Space space = defaultSpace(input_);
+        const Space space = opt_.engine ? engineSpace(*opt_.engine, input_) : defaultSpace(input_);
         std::vector<Settings> from = starts(input_);
         // A reference's method is within budget by definition; so is it with an analytic bias.
         for (const auto& [name, r] : refs_) from.insert(from.end(), {r, texelBias(r), planeBias(r), seenBy(r), seenNear(r)});
+        if (opt_.engine)  // every start as the engine can take it
+            for (Settings& s : from) s = ontoEngine(*opt_.engine, s);
         const std::optional<Settings> earlier = earlierTuned();
         result_ = search(from, space, [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); }, so);
         if (!result_.stopped && earlier) keepIfBetter(*earlier);
@@ -446,6 +454,11 @@ private:
             refs_.push_back({file.stem().string(), sweep::referenceOnBase(input_, ref, file.stem().string(), adapted)});
             for (const std::string& a : adapted) say("note: reference " + a);
         }
+        // For an engine with no budget given: its defaults on this scene and views set the budget
+        // and are the baseline the tune must beat.
+        if (opt_.engine && !opt_.budgetMs && !opt_.budgetMiB && opt_.budgetFrom.empty())
+            refs_.push_back({xport::webEngineName(*opt_.engine) + "-defaults",
+                             xport::engineModel(*opt_.engine, xport::defaultKnobs(*opt_.engine), input_)});
         for (const fs::path& file : opt_.compareWith) {
             std::vector<std::string> adapted;
             compared_.push_back({file.stem().string(), sweep::referenceOnBase(input_, loadPreset(file), file.stem().string(), adapted)});
@@ -465,6 +478,7 @@ private:
                 {"holdOutEvery", opt_.holdOutEvery},
                 {"seed", opt_.seed},
                 {"costProfile", metrics::profileName(*opt_.profile)}};
+        if (opt_.engine) j["engine"] = xport::webEngineName(*opt_.engine);
         // Only when not the default, so folders of earlier tunes still resume.
         if (!opt_.constraints) j["constraints"] = "none";
         if (opt_.front) j["front"] = true;
@@ -556,6 +570,9 @@ private:
     // "in the tuned preset" needs anyway.
     void simplify(std::size_t best) {
         Candidate c = result_.evaluated[best];
+        // Points already stood on: two linked fields (manual splits and their scheme) can undo each
+        // other in turn for ever when neither buys anything (seen with tune --engine threejs).
+        std::vector<Settings> visited{c.settings};
         for (bool undone = true; undone;) {
             undone = false;
             for (const Change& ch : changesBetween(input_, c.settings)) {
@@ -566,6 +583,8 @@ private:
                     continue;
                 }
                 if (without == c.settings || !validate(without).empty()) continue;
+                if (std::find(visited.begin(), visited.end(), without) != visited.end()) continue;
+                visited.push_back(without);
                 const Evaluation e = judge(measured(without, "tuned"), objective_);
                 if (e.valid && e.constraintsMet && budget_.fits(e) && e.error <= c.eval.error && e.costMs <= c.eval.costMs) {
                     say("simplified: " + ch.path + " back to " + (ch.from.is_string() ? ch.from.get<std::string>() : ch.from.dump()) +
@@ -580,12 +599,22 @@ private:
         result_.best = result_.evaluated.size() - 1;
     }
 
+    // <engine>.json: the knobs (engine-check --knobs takes its "knobs"); <engine>.js: paste-ready.
+    void writeEngineOutputs(xport::WebEngine e, const Settings& best) const {
+        const xport::EngineKnobs k = xport::knobsFor(e, best);
+        const std::string name = xport::webEngineName(e);
+        writeTextAtomic(opt_.outDir / (name + ".json"), Json{{"engine", name}, {"knobs", k.knobs}, {"lacks", k.lacks}}.dump(2) + "\n");
+        writeTextAtomic(opt_.outDir / (name + ".js"), engineSnippet(e, k.knobs));
+        say("wrote " + (opt_.outDir / (name + ".js")).string() + (k.lacks.empty() ? "" : " (lacks: " + k.lacks.front() + ")"));
+    }
+
     void writeOutputs(const Candidate& best, double seconds) {
         const fs::path& dir = opt_.outDir;
         if (writes()) {
             const Json tuned = sweep::presetInFolder(dir, presetDir_, toOrderedJson(best.settings));
             writeTextAtomic(dir / "tuned.json", tuned.dump(2) + "\n");
             loadPreset(dir / "tuned.json");  // never leave a preset that does not load again
+            if (opt_.engine) writeEngineOutputs(*opt_.engine, best.settings);
             writeFront(&best);
         }
         // Every shard makes the measurements below, in the same order, so they share them.

@@ -6,6 +6,7 @@
 // (rewritten atomically before each evaluation) says how far it is, for a UI to draw (the editor's
 // Tune panel). Needs a current GL context.
 #include "metrics/cost_model.h"
+#include "renderer/export/engine_knobs.h"
 #include "tune/tune_journal.h"
 #include "tune/tune_search.h"
 
@@ -54,6 +55,9 @@ struct TuneOptions {
     // Each view keeps its own renderer and maps (ViewEvaluator::setRendererPerView); false: the
     // baseline that redraws every map at every change of view (scripts/bench_tune.sh's ratio).
     bool rendererPerView = true;
+    // Tune for this engine (tune_engine.h): its knobs only; tuned.json is what it renders, and
+    // <engine>.json / <engine>.js its knobs and paste-ready text.
+    std::optional<xport::WebEngine> engine;
 };
 
 struct TuneOutcome {

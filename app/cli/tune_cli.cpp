@@ -31,6 +31,7 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
     auto size = std::make_shared<std::string>();
     auto shard = std::make_shared<std::string>();
     auto constraints = std::make_shared<std::string>("artifacts");
+    auto engine = std::make_shared<std::string>();
     CLI::App* cmd = cli.add_subcommand(
         "tune", "Find the best settings for a preset's scene within a cost budget, by search, and explain them");
     cmd->add_option("preset", opt->preset, "Preset to tune (its scene, camera, light and size stay)")->required();
@@ -59,6 +60,10 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "input's; none: the objective alone, as a sweep's front ranks points")
         ->check(CLI::IsMember({"artifacts", "none"}))
         ->capture_default_str();
+    cmd->add_option("--engine", *engine,
+                    "Tune for this engine: its own knobs only (" + xport::webEngineList() +
+                    "); writes ENGINE.json (its knobs) and ENGINE.js (paste-ready) beside tuned.json")
+        ->check(CLI::IsMember({"threejs", "babylon"}));
     cmd->add_flag("--front", opt->front,
                   "Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point: front/ "
                   "then charts cost against error from the cheapest to the budget (docs/tuning.md#front)");
@@ -89,8 +94,9 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                   "Measure every view with one renderer, redrawing every map at each change of view (the "
                   "baseline scripts/bench_tune.sh compares with; the result is the same)");
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");
-    cmd->callback([opt, budgetMs, budgetMiB, size, shard, constraints, ms, mib, &exitCode] {
+    cmd->callback([opt, budgetMs, budgetMiB, size, shard, constraints, engine, ms, mib, &exitCode] {
         opt->noConstraints = *constraints == "none";
+        if (!engine->empty()) opt->engine = xport::parseWebEngine(*engine);
         if (!shard->empty() && !parseShard(*shard, opt->shardIndex, opt->shardCount)) {
             std::fprintf(stderr, "error: --shard: expected k/n with 1 <= k <= n <= 1000, got '%s'\n", shard->c_str());
             exitCode = 2;

@@ -70,6 +70,7 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         to.evaluations = opt.evaluations;
         to.constraints = !opt.noConstraints;
         to.front = opt.front;
+        to.engine = opt.engine;
         to.stopAfter = opt.stopAfter;
         to.shard = {opt.shardIndex, opt.shardCount};
         to.shardWaitSeconds = opt.shardWaitSeconds;

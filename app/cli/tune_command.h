@@ -1,6 +1,8 @@
 #pragma once
 // `shadowtune tune`: the best settings for a preset's scene within a cost budget, found by search
 // and explained (tune/tune_run.h).
+#include "renderer/export/engine_knobs.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -24,6 +26,7 @@ struct TuneCommandOptions {
     int evaluations = 80;
     bool noConstraints = false;  // --constraints none
     bool front = false;
+    std::optional<xport::WebEngine> engine;  // --engine: that engine's knobs only
     long stopAfter = -1;
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile

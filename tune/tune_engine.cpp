@@ -1,0 +1,148 @@
+#include "tune/tune_engine.h"
+
+#include <cstdio>
+#include <string>
+
+namespace st::tune {
+namespace {
+
+using Json = nlohmann::json;
+
+std::vector<Json> numbers(std::initializer_list<double> values) { return {values.begin(), values.end()}; }
+std::vector<Json> names(std::initializer_list<const char*> values) { return {values.begin(), values.end()}; }
+
+// The shadow distance and the split depths as shares of the far plane, as defaultSpace states them.
+std::vector<Json> distances(const Settings& base) {
+    std::vector<Json> d{0.0};
+    for (double share : {0.8, 0.65, 0.5, 0.4, 0.3, 0.22, 0.15, 0.12, 0.1, 0.08, 0.065}) d.emplace_back(farPlaneShare(base, share));
+    return d;
+}
+
+std::vector<Json> splitDepths(const Settings& base) {
+    std::vector<Json> d;
+    for (double share : {0.002, 0.004, 0.006, 0.01, 0.015, 0.02, 0.03, 0.04, 0.06, 0.08, 0.1, 0.13, 0.17, 0.22, 0.3, 0.4,
+                         0.5, 0.65, 0.8})
+        d.emplace_back(farPlaneShare(base, share));
+    return d;
+}
+
+void threejsDims(Space& s, const Settings& base) {
+    auto add = [&](std::string path, std::vector<Json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
+    add("cascades.count", numbers({1, 2, 3, 4, 5, 6}));
+    add("cascades.scheme", names({"practical", "uniform", "logarithmic", "manual"}));  // practical is lambda 0.5
+    add("cascades.shadowDistance", distances(base));  // maxFar
+    s.dims.back().jumps = true;
+    add("cascades.mapSize", numbers({256, 512, 1024, 2048, 4096}));  // shadowMapSize
+    std::vector<Json> margins;  // lightMargin - lightNear
+    for (double share : kZExtensionShares) margins.emplace_back(farPlaneShare(base, share));
+    margins.emplace_back(199.0);
+    add("cascades.zExtensionDistance", margins);
+    add("cascades.casterFaces", names({"back", "both", "front"}));  // material.shadowSide
+    add("filter.kind", names({"pcf-vogel", "hard"}));                // PCFShadowMap, BasicShadowMap
+    add("filter.radius", numbers({0.0, 0.5, 1.0, 1.5, 2.0, 3.0}));   // light.shadow.radius
+    // shadowBias x lightDepth (1999 m), toward the light: three.js's -1e-6 .. -1e-3.
+    add("bias.constant", numbers({-0.002, 0.0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0}));
+    add("bias.normalOffset", numbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
+    for (int i = 0; i + 1 < kMaxTunedCascades; ++i)
+        s.dims.push_back({"cascades.manualSplits[" + std::to_string(i) + "]", splitDepths(base), true});  // custom breaks
+}
+
+void babylonDims(Space& s, const Settings& base) {
+    auto add = [&](std::string path, std::vector<Json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
+    add("cascades.count", numbers({2, 3, 4}));                                    // numCascades
+    add("cascades.lambda", numbers({0.0, 0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0}));
+    add("cascades.shadowDistance", distances(base));                               // shadowMaxZ
+    s.dims.back().jumps = true;
+    add("cascades.mapSize", numbers({256, 512, 1024, 2048, 4096}));
+    // stabilizeCascades and depthClamp false are modelled only approximately (docs/engines.md):
+    // the space keeps Babylon's defaults there, so what the tune says is what the engine does.
+    add("cascades.blendBand", numbers({0.0, 0.05, 0.1, 0.2}));                     // cascadeBlendPercentage
+    add("filter.kind", names({"pcf-tent", "pcf2x2", "hard"}));                     // PCF high/medium, low, none
+    add("filter.size", numbers({3, 5}));
+    // 1.5 x bias (depth clamp), in each box's normalised depth: Babylon's 5e-5 .. 5e-3.
+    add("bias.constant", numbers({0.000075, 0.00015, 0.0003, 0.00075, 0.0015, 0.003, 0.0075}));
+    add("bias.normalOffset", numbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
+}
+
+std::string threejsSnippet(const Json& k) {
+    std::string breaks = k.at("breaks").is_null() ? "" : k.at("breaks").dump();
+    std::string js;
+    js += "// three.js r187: shadowtune tune --engine threejs. Paste after creating the renderer, camera and scene.\n";
+    js += "import { CSM } from 'three/addons/csm/CSM.js';\n";
+    js += "renderer.shadowMap.enabled = true;\n";
+    js += "renderer.shadowMap.type = THREE." + k.at("shadowMapType").get<std::string>() + ";\n";
+    js += "const csm = new CSM({\n";
+    js += "  camera, parent: scene, lightDirection: sunDirection,\n";
+    js += "  cascades: " + k.at("cascades").dump() + ", mode: " + k.at("mode").dump() + ", maxFar: " + k.at("maxFar").dump() +
+          ",\n";
+    js += "  shadowMapSize: " + k.at("shadowMapSize").dump() + ", shadowBias: " + k.at("shadowBias").dump() + ",\n";
+    js += "  lightNear: " + k.at("lightNear").dump() + ", lightFar: " + k.at("lightFar").dump() +
+          ", lightMargin: " + k.at("lightMargin").dump() + ",\n";
+    if (!breaks.empty())
+        js += "  customSplitsCallback: (cascades, near, far, breaks) => breaks.push(..." + breaks + "),\n";
+    js += "});\n";
+    js += "csm.fade = " + k.at("fade").dump() + ";  // set after the constructor, which ignores data.fade\n";
+    js += "for (const light of csm.lights) {\n";
+    js += "  light.shadow.normalBias = " + k.at("normalBias").dump() + ";\n";
+    js += "  light.shadow.radius = " + k.at("radius").dump() + ";\n";
+    js += "}\n";
+    if (!k.at("shadowSide").is_null()) {
+        const std::string side = k.at("shadowSide").get<std::string>();
+        const std::string name = side == "front" ? "FrontSide" : side == "back" ? "BackSide" : "DoubleSide";
+        js += "scene.traverse((o) => { if (o.material) o.material.shadowSide = THREE." + name + "; });\n";
+    }
+    js += "scene.traverse((o) => { if (o.material) csm.setupMaterial(o.material); });\n";
+    js += "csm.updateFrustums();  // and csm.update() every frame before rendering\n";
+    return js;
+}
+
+std::string babylonSnippet(const Json& k) {
+    std::string js;
+    js += "// Babylon.js 9: shadowtune tune --engine babylon. `light` is the sun's DirectionalLight.\n";
+    js += "const csm = new BABYLON.CascadedShadowGenerator(" + k.at("mapSize").dump() + ", light);\n";
+    js += "csm.numCascades = " + k.at("numCascades").dump() + ";\n";
+    js += "csm.lambda = " + k.at("lambda").dump() + ";\n";
+    if (!k.at("shadowMaxZ").is_null()) js += "csm.shadowMaxZ = " + k.at("shadowMaxZ").dump() + ";\n";
+    js += "csm.stabilizeCascades = " + k.at("stabilizeCascades").dump() + ";\n";
+    js += "csm.depthClamp = " + k.at("depthClamp").dump() + ";\n";
+    js += "csm.cascadeBlendPercentage = " + k.at("cascadeBlendPercentage").dump() + ";\n";
+    js += "csm.bias = " + k.at("bias").dump() + ";\n";
+    js += "csm.normalBias = " + k.at("normalBias").dump() + ";\n";
+    const std::string filter = k.at("filter").get<std::string>();
+    if (filter == "none") js += "csm.usePercentageCloserFiltering = false;\n";
+    else if (filter == "PCSS") js += "csm.useContactHardeningShadow = true;\n";
+    else js += "csm.usePercentageCloserFiltering = true;\n";
+    const std::string q = k.at("filteringQuality").get<std::string>();
+    js += "csm.filteringQuality = BABYLON.ShadowGenerator.QUALITY_" + std::string(q == "low" ? "LOW" : q == "medium" ? "MEDIUM" : "HIGH") + ";\n";
+    js += "for (const mesh of scene.meshes) { mesh.receiveShadows = true; csm.addShadowCaster(mesh); }\n";
+    return js;
+}
+
+}  // namespace
+
+Settings ontoEngine(xport::WebEngine e, const Settings& s) {
+    nlohmann::json knobs = xport::knobsFor(e, s).knobs;
+    if (e == xport::WebEngine::Babylon) {  // the knobs engineSpace keeps at their defaults
+        knobs["stabilizeCascades"] = false;
+        knobs["depthClamp"] = true;
+    }
+    return xport::engineModel(e, knobs, s);
+}
+
+Space engineSpace(xport::WebEngine e, const Settings& base) {
+    Space s;
+    if (e == xport::WebEngine::Threejs) threejsDims(s, base);
+    else babylonDims(s, base);
+    for (Dimension& d : s.dims) {
+        const auto starts = [&](const char* prefix) { return d.path.rfind(prefix, 0) == 0; };
+        d.polish = starts("bias.") || d.path == "filter.radius" || starts("cascades.manualSplits") ||
+                   d.path == "cascades.shadowDistance" || d.path == "cascades.blendBand";
+    }
+    return s;
+}
+
+std::string engineSnippet(xport::WebEngine e, const nlohmann::json& knobs) {
+    return e == xport::WebEngine::Threejs ? threejsSnippet(knobs) : babylonSnippet(knobs);
+}
+
+}  // namespace st::tune
