@@ -6,20 +6,18 @@
 namespace st::tune {
 namespace {
 
-using Json = nlohmann::json;
-
-std::vector<Json> numbers(std::initializer_list<double> values) { return {values.begin(), values.end()}; }
-std::vector<Json> names(std::initializer_list<const char*> values) { return {values.begin(), values.end()}; }
+std::vector<nlohmann::json> engineNumbers(std::initializer_list<double> values) { return {values.begin(), values.end()}; }
+std::vector<nlohmann::json> engineNames(std::initializer_list<const char*> values) { return {values.begin(), values.end()}; }
 
 // The shadow distance and the split depths as shares of the far plane, as defaultSpace states them.
-std::vector<Json> distances(const Settings& base) {
-    std::vector<Json> d{0.0};
+std::vector<nlohmann::json> engineDistances(const Settings& base) {
+    std::vector<nlohmann::json> d{0.0};
     for (double share : {0.8, 0.65, 0.5, 0.4, 0.3, 0.22, 0.15, 0.12, 0.1, 0.08, 0.065}) d.emplace_back(farPlaneShare(base, share));
     return d;
 }
 
-std::vector<Json> splitDepths(const Settings& base) {
-    std::vector<Json> d;
+std::vector<nlohmann::json> engineSplitDepths(const Settings& base) {
+    std::vector<nlohmann::json> d;
     for (double share : {0.002, 0.004, 0.006, 0.01, 0.015, 0.02, 0.03, 0.04, 0.06, 0.08, 0.1, 0.13, 0.17, 0.22, 0.3, 0.4,
                          0.5, 0.65, 0.8})
         d.emplace_back(farPlaneShare(base, share));
@@ -27,44 +25,44 @@ std::vector<Json> splitDepths(const Settings& base) {
 }
 
 void threejsDims(Space& s, const Settings& base) {
-    auto add = [&](std::string path, std::vector<Json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
-    add("cascades.count", numbers({1, 2, 3, 4, 5, 6}));
-    add("cascades.scheme", names({"practical", "uniform", "logarithmic", "manual"}));  // practical is lambda 0.5
-    add("cascades.shadowDistance", distances(base));  // maxFar
+    auto add = [&](std::string path, std::vector<nlohmann::json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
+    add("cascades.count", engineNumbers({1, 2, 3, 4, 5, 6}));
+    add("cascades.scheme", engineNames({"practical", "uniform", "logarithmic", "manual"}));  // practical is lambda 0.5
+    add("cascades.shadowDistance", engineDistances(base));  // maxFar
     s.dims.back().jumps = true;
-    add("cascades.mapSize", numbers({256, 512, 1024, 2048, 4096}));  // shadowMapSize
-    std::vector<Json> margins;  // lightMargin - lightNear
+    add("cascades.mapSize", engineNumbers({256, 512, 1024, 2048, 4096}));  // shadowMapSize
+    std::vector<nlohmann::json> margins;  // lightMargin - lightNear
     for (double share : kZExtensionShares) margins.emplace_back(farPlaneShare(base, share));
     margins.emplace_back(199.0);
     add("cascades.zExtensionDistance", margins);
-    add("cascades.casterFaces", names({"back", "both", "front"}));  // material.shadowSide
-    add("filter.kind", names({"pcf-vogel", "hard"}));                // PCFShadowMap, BasicShadowMap
-    add("filter.radius", numbers({0.0, 0.5, 1.0, 1.5, 2.0, 3.0}));   // light.shadow.radius
+    add("cascades.casterFaces", engineNames({"back", "both", "front"}));  // material.shadowSide
+    add("filter.kind", engineNames({"pcf-vogel", "hard"}));                // PCFShadowMap, BasicShadowMap
+    add("filter.radius", engineNumbers({0.0, 0.5, 1.0, 1.5, 2.0, 3.0}));   // light.shadow.radius
     // shadowBias x lightDepth (1999 m), toward the light: three.js's -1e-6 .. -1e-3.
-    add("bias.constant", numbers({-0.002, 0.0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0}));
-    add("bias.normalOffset", numbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
+    add("bias.constant", engineNumbers({-0.002, 0.0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0}));
+    add("bias.normalOffset", engineNumbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
     for (int i = 0; i + 1 < kMaxTunedCascades; ++i)
-        s.dims.push_back({"cascades.manualSplits[" + std::to_string(i) + "]", splitDepths(base), true});  // custom breaks
+        s.dims.push_back({"cascades.manualSplits[" + std::to_string(i) + "]", engineSplitDepths(base), true});  // custom breaks
 }
 
 void babylonDims(Space& s, const Settings& base) {
-    auto add = [&](std::string path, std::vector<Json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
-    add("cascades.count", numbers({2, 3, 4}));                                    // numCascades
-    add("cascades.lambda", numbers({0.0, 0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0}));
-    add("cascades.shadowDistance", distances(base));                               // shadowMaxZ
+    auto add = [&](std::string path, std::vector<nlohmann::json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
+    add("cascades.count", engineNumbers({2, 3, 4}));                                    // numCascades
+    add("cascades.lambda", engineNumbers({0.0, 0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0}));
+    add("cascades.shadowDistance", engineDistances(base));                               // shadowMaxZ
     s.dims.back().jumps = true;
-    add("cascades.mapSize", numbers({256, 512, 1024, 2048, 4096}));
+    add("cascades.mapSize", engineNumbers({256, 512, 1024, 2048, 4096}));
     // stabilizeCascades and depthClamp false are modelled only approximately (docs/engines.md):
     // the space keeps Babylon's defaults there, so what the tune says is what the engine does.
-    add("cascades.blendBand", numbers({0.0, 0.05, 0.1, 0.2}));                     // cascadeBlendPercentage
-    add("filter.kind", names({"pcf-tent", "pcf2x2", "hard"}));                     // PCF high/medium, low, none
-    add("filter.size", numbers({3, 5}));
+    add("cascades.blendBand", engineNumbers({0.0, 0.05, 0.1, 0.2}));                     // cascadeBlendPercentage
+    add("filter.kind", engineNames({"pcf-tent", "pcf2x2", "hard"}));                     // PCF high/medium, low, none
+    add("filter.size", engineNumbers({3, 5}));
     // 1.5 x bias (depth clamp), in each box's normalised depth: Babylon's 5e-5 .. 5e-3.
-    add("bias.constant", numbers({0.000075, 0.00015, 0.0003, 0.00075, 0.0015, 0.003, 0.0075}));
-    add("bias.normalOffset", numbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
+    add("bias.constant", engineNumbers({0.000075, 0.00015, 0.0003, 0.00075, 0.0015, 0.003, 0.0075}));
+    add("bias.normalOffset", engineNumbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
 }
 
-std::string threejsSnippet(const Json& k) {
+std::string threejsSnippet(const nlohmann::json& k) {
     std::string breaks = k.at("breaks").is_null() ? "" : k.at("breaks").dump();
     std::string js;
     js += "// three.js r187: shadowtune tune --engine threejs. Paste after creating the renderer, camera and scene.\n";
@@ -96,7 +94,7 @@ std::string threejsSnippet(const Json& k) {
     return js;
 }
 
-std::string babylonSnippet(const Json& k) {
+std::string babylonSnippet(const nlohmann::json& k) {
     std::string js;
     js += "// Babylon.js 9: shadowtune tune --engine babylon. `light` is the sun's DirectionalLight.\n";
     js += "const csm = new BABYLON.CascadedShadowGenerator(" + k.at("mapSize").dump() + ", light);\n";
