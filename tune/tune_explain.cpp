@@ -108,7 +108,7 @@ Explanation explain(const Settings& input, const Evaluation& inputEval, const Se
         const Settings alone = withChange(input, x, true);
         x.alone = alone == input ? inputEval : evaluate(alone);
         x.without = without == tuned ? tunedEval : evaluate(without);
-        x.line = std::string(f->label) + " " + valueText(c.from, f->unit) + " -> " + valueText(c.to, f->unit) + also +
+        x.line = std::string(f->label) + " " + valueText(c.from, unitIn(*f, input)) + " -> " + valueText(c.to, unitIn(*f, tuned)) + also +
                  ": alone " + judged(x.alone, row, inputEval, false) + "; in the tuned preset " +
                  judged(x.without, row, tunedEval, true);
         out.changes.push_back(std::move(x));

@@ -7,6 +7,13 @@
 #include <utility>
 
 namespace st {
+
+std::string_view unitIn(const FieldInfo& field, const Settings& s) {
+    if (field.path == "bias.normalOffset") return s.bias.normalOffsetUnit == OffsetUnit::Metres ? "m" : "texels";
+    if (field.path == "bias.constant") return s.bias.constantUnit == BiasUnit::Depth ? "of the light box's depth" : "m";
+    return field.unit;
+}
+
 namespace {
 
 template <class T>

@@ -67,6 +67,10 @@ const std::vector<FieldInfo>& fieldTable();
 // The row with this JSON path, or nullptr.
 const FieldInfo* findField(std::string_view path);
 
+// The unit `field`'s value has in `s`: its row's, but for the biases whose unit is a setting of its
+// own (bias.constantUnit, bias.normalOffsetUnit).
+std::string_view unitIn(const FieldInfo& field, const Settings& s);
+
 // Rows whose value differs between a and b, in table order.
 std::vector<const FieldInfo*> changedFields(const Settings& a, const Settings& b);
 

@@ -175,3 +175,24 @@ TEST(ClassifyChangeTest, OutputSizeAndScene) {
 
 }  // namespace
 }  // namespace st
+
+namespace st {
+namespace {
+
+// A bias whose unit is a setting of its own is said in that unit (an engine-bound tune's
+// explanation printed "Normal offset 0 texels -> 0.02 texels" for three.js's metres).
+TEST(FieldTableTest, TheBiasesUnitFollowsTheirUnitSetting) {
+    Settings s;
+    const FieldInfo& offset = *findField("bias.normalOffset");
+    const FieldInfo& constant = *findField("bias.constant");
+    EXPECT_EQ(unitIn(offset, s), "texels");
+    EXPECT_EQ(unitIn(constant, s), "m");
+    s.bias.normalOffsetUnit = OffsetUnit::Metres;
+    s.bias.constantUnit = BiasUnit::Depth;
+    EXPECT_EQ(unitIn(offset, s), "m");
+    EXPECT_EQ(unitIn(constant, s), "of the light box's depth");
+    EXPECT_EQ(unitIn(*findField("cascades.mapSize"), s), "texels");
+}
+
+}  // namespace
+}  // namespace st
