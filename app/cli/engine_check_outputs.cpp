@@ -18,7 +18,7 @@ namespace {
 using nlohmann::json;
 using Colour = std::array<std::uint8_t, 3>;
 
-constexpr Colour kNone{24, 32, 56}, kAway{70, 70, 70};
+constexpr Colour kNone{24, 32, 56}, kAway{60, 45, 80};  // not scored: a dark violet, apart from the greys
 constexpr Colour kAgreeLit{235, 235, 235}, kAgreeShadow{110, 110, 110};
 constexpr Colour kEngineOnly{220, 40, 40}, kModelOnly{40, 110, 230};
 
@@ -91,18 +91,24 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
     const std::string version = info.value("version", std::string("?"));
     std::array<std::size_t, 5> counts{};
     for (metrics::AgreementClass c : classes) ++counts[std::size_t(c)];
+    std::size_t sky = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) sky += s.covered(i) ? 0 : 1;
+    const std::size_t away = counts[std::size_t(metrics::AgreementClass::NotScored)] - sky;
+    const std::vector<metrics::LegendEntry> factorKey{{"facing away", kAway, away}, {"no surface", kNone, sky}};
     char pct[64];
     std::snprintf(pct, sizeof pct, "%.2f %%", 100.0 * a.agreement());
     writeImageAtomic(opt.outDir / "engine.png",
-                     withLegend(factorImage(s, fe, ce), name + " " + version + ": its own shadow factor", {}));
-    writeImageAtomic(opt.outDir / "model.png", withLegend(factorImage(s, fm, cm), "shadowtune's model of the same settings", {}));
+                     withLegend(factorImage(s, fe, ce), name + " " + version + ": its own shadow factor, dark 0 (shadowed) .. white 1 (lit)", factorKey));
+    writeImageAtomic(opt.outDir / "model.png", withLegend(factorImage(s, fm, cm), "shadowtune's model of the same settings, dark 0 .. white 1", factorKey));
     writeImageAtomic(opt.outDir / "truth.png", withLegend(metrics::truthImage(s, m.truth), "ray-cast truth (lit, shadowed)", {}));
     writeImageAtomic(opt.outDir / "disagreement.png",
                      withLegend(disagreementImage(s, classes), "engine vs model: " + std::string(pct) + " of scored pixels agree",
                                 {{"both lit", kAgreeLit, counts[std::size_t(metrics::AgreementClass::AgreeLit)]},
                                  {"both shadowed", kAgreeShadow, counts[std::size_t(metrics::AgreementClass::AgreeShadow)]},
                                  {"only " + name + " shadowed", kEngineOnly, a.engineOnlyShadow},
-                                 {"only shadowtune shadowed", kModelOnly, a.modelOnlyShadow}}));
+                                 {"only shadowtune shadowed", kModelOnly, a.modelOnlyShadow},
+                                 {"not scored (facing away)", kAway, away},
+                                 {"no surface", kNone, sky}}));
     const json figures = {{"engine", {{"name", name}, {"version", version}, {"figures", figuresOf(a, a.engine)}}},
                           {"model", {{"figures", figuresOf(a, a.model)}}},
                           {"agreement", a.agreement()},

@@ -34,8 +34,7 @@ EngineExport exportBabylon(const Settings& s, const PresetFacts&) {
     EngineExport e{Engine::Babylon, "Babylon.js 9.28: CascadedShadowGenerator (@babylonjs/core Lights/Shadows)", {}};
     const EngineKnobs k = babylonKnobsFor(s);
     for (const KnobText& t : kBabylonKnobs) e.add(t.key, k.knobs.at(t.key), Mapping::Exact, t.note);
-    for (const std::string& lack : k.lacks)
-        e.add("(" + lack.substr(0, lack.find(':')) + ")", nullptr, Mapping::NoEquivalent, lack);
+    addLacks(e, k.lacks);
     addKnobsWithoutSetting(e, s,
                            {.cameraRelative = "Babylon fits its light boxes in world space, in float32 matrices",
                             .fitFovY = "Babylon fits the camera's current frustum",

@@ -9,6 +9,10 @@
 
 namespace st::xport {
 
+void addLacks(EngineExport& e, const std::vector<std::string>& lacks) {
+    for (const std::string& lack : lacks) e.add("(" + lack.substr(0, lack.find(':')) + ")", nullptr, Mapping::NoEquivalent, lack);
+}
+
 PresetFacts presetFacts(const Settings& s) {
     Settings flat = s;
     flat.cascades.zExtension = ZExtension::None;  // x,y texel size is independent of z

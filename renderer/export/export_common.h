@@ -40,6 +40,9 @@ std::string filterKindText(const Settings& s);
 // fade where `engineFades` is false): one no-equivalent item each, only where the preset uses it, so
 // an export never reads as complete when it is not.
 void addShadowtuneOnly(EngineExport& e, const Settings& s, bool engineFades);
+// What the preset uses and the engine lacks (EngineKnobs::lacks, "what: why"), one no-equivalent
+// item "(what)" each: the web engines' exporters, from their knob tables.
+void addLacks(EngineExport& e, const std::vector<std::string>& lacks);
 
 // The knobs each engine answers in its own way: camera-relative light space, a fit field of view
 // and contact shadows. Each exporter gives its engine's texts; an item is added only where the preset

@@ -45,7 +45,7 @@ EngineExport exportThreeJs(const Settings& s, const PresetFacts&) {
         if (std::string(t.key) == "breaks" && v.is_null()) continue;
         e.add(t.name, v, M::Exact, t.note);
     }
-    for (const std::string& lack : k.lacks) e.add("(" + lack.substr(0, lack.find(':')) + ")", nullptr, M::NoEquivalent, lack);
+    addLacks(e, k.lacks);
     addKnobsWithoutSetting(
         e, s,
         {.cameraRelative = "CSM.js fits its light boxes in world space, in float32",
