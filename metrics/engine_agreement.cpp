@@ -37,6 +37,9 @@ EngineAgreement compareWithEngine(const std::vector<glm::vec4>& engine, const Me
         const bool litE = fe >= 0.5f, litM = fm >= 0.5f;
         scoreFactor(a.engine, fe, truth[i] != 0, soft[i]);
         scoreFactor(a.model, fm, truth[i] != 0, soft[i]);
+        const float diff = std::abs(fe - fm);
+        a.factorAbsDiffSum += diff;
+        if (litE != litM && diff <= kBorderlineFactor) ++a.borderline;
         AgreementClass c;
         if (litE == litM) {
             ++a.agree;

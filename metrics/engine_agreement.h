@@ -20,17 +20,28 @@ struct FactorScore {
     double filteredAbsErrorSum = 0.0;
 };
 
+// Two factors this close count as the same shade in factorAgreement (a 0.1 step of a 0..1 factor).
+inline constexpr float kBorderlineFactor = 0.1f;
+
 struct EngineAgreement {
     std::size_t scored = 0;        // receivers in both images
     std::size_t agree = 0;         // same lit/shadowed state in both
     std::size_t engineOnlyShadow = 0, modelOnlyShadow = 0;
     std::size_t engineMissing = 0; // shadowtune receivers the engine did not draw (coverage 0)
+    // The factors themselves: a lit/shadowed state is the factor against 0.5, so two factors a hair
+    // apart on either side of 0.5 (acne's bands under a filter) disagree in state. `borderline`
+    // counts the disagreeing pixels whose factors differ by at most kBorderlineFactor.
+    double factorAbsDiffSum = 0.0;
+    std::size_t borderline = 0;
     FactorScore engine, model;
     double agreement() const { return scored ? double(agree) / double(scored) : 0.0; }
     double misclassified(const FactorScore& f) const {
         return scored ? double(f.falseShadow + f.falseLight) / double(scored) : 0.0;
     }
     double filteredError(const FactorScore& f) const { return scored ? f.filteredAbsErrorSum / double(scored) : 0.0; }
+    double meanFactorDifference() const { return scored ? factorAbsDiffSum / double(scored) : 0.0; }
+    // Same state, or factors within kBorderlineFactor of each other.
+    double factorAgreement() const { return scored ? double(agree + borderline) / double(scored) : 0.0; }
 };
 
 // Per pixel of the disagreement map.

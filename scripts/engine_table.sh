@@ -11,13 +11,15 @@
 # Exits 1 at the end when a check failed or an agreement is below 0.98 (listed on stderr).
 #   scripts/engine_table.sh [ENGINES] [OUT]   (default "threejs babylon", out/engine-table)
 # Needs build/release/shadowtune (builds nothing), jq, node + Chromium + engines/node_modules
-# (scripts/setup.sh) and ../shared/assets for the six real scenes. SIZE=WxH changes the size.
+# (scripts/setup.sh) and ../shared/assets for the six real scenes. SIZE=WxH changes the size; BIN=PATH
+# runs another shadowtune (a copy, so a rebuild cannot swap it mid-table). "factor agreement": the same
+# state or factors within 0.1 (acne under a filter hovers at 0.5, where a hair flips the state).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 engines=${1:-threejs babylon}
 out=${2:-$root/out/engine-table}
 size=${SIZE:-640x360}
-bin=$root/build/release/shadowtune
+bin=${BIN:-$root/build/release/shadowtune}
 [[ -x $bin ]] || { echo "error: $bin not built (cmake --build build/release)" >&2; exit 1; }
 command -v jq >/dev/null || { echo "error: jq not found" >&2; exit 1; }
 mkdir -p "$out/knobs" "$out/logs"
@@ -82,7 +84,7 @@ for engine in $engines; do
           [[ $rc == 0 ]] && first="no figures.json ($first)"
           # a failed check's figures.json must not count as done on the next run
           [[ -f $dir/figures.json ]] && mv "$dir/figures.json" "$dir/figures.failed.json"
-          rows+=("| $scene | $setting | failed: ${first//|/\\|} | | | | | |")
+          rows+=("| $scene | $setting | failed: ${first//|/\\|} | | | | | | |")
           problems+=("$engine $scene $setting: failed: $first")
           continue
         fi
@@ -90,11 +92,11 @@ for engine in $engines; do
       f=$dir/figures.json
       agreement=$(jq -r '.agreement // empty' "$f")
       if [[ -z $agreement ]]; then
-        rows+=("| $scene | $setting | failed: figures.json has no agreement | | | | | |")
+        rows+=("| $scene | $setting | failed: figures.json has no agreement | | | | | | |")
         problems+=("$engine $scene $setting: figures.json has no agreement")
         continue
       fi
-      rows+=("| $scene | $setting | $(pct .agreement "$f") | $(pct '.engine.figures["accuracy.misclassified"]' "$f") | $(pct '.model.figures["accuracy.misclassified"]' "$f") | $(jq -r '.engine.figures["soft.filteredError"] | (. * 10000 | round) / 10000' "$f") | $(jq -r '.model.figures["soft.filteredError"] | (. * 10000 | round) / 10000' "$f") | $(jq -r '.seconds | (. * 10 | round) / 10 | tostring | if test("[.]") then . else . + ".0" end' "$f") |")
+      rows+=("| $scene | $setting | $(pct .agreement "$f") | $(pct .factorAgreement "$f") | $(pct '.engine.figures["accuracy.misclassified"]' "$f") | $(pct '.model.figures["accuracy.misclassified"]' "$f") | $(jq -r '.engine.figures["soft.filteredError"] | (. * 10000 | round) / 10000' "$f") | $(jq -r '.model.figures["soft.filteredError"] | (. * 10000 | round) / 10000' "$f") | $(jq -r '.seconds | (. * 10 | round) / 10 | tostring | if test("[.]") then . else . + ".0" end' "$f") |")
       if jq -e '.agreement < 0.98' "$f" >/dev/null; then
         problems+=("$engine $scene $setting: agreement $(pct .agreement "$f") < 98 %")
       fi
@@ -104,8 +106,8 @@ for engine in $engines; do
   echo
   echo "### $engine${version:+ $version}, $size"
   echo
-  echo "| scene | settings | agreement | misclassified engine | misclassified shadowtune | filtered error engine | filtered error shadowtune | seconds |"
-  echo "|---|---|---|---|---|---|---|---|"
+  echo "| scene | settings | agreement | factor agreement | misclassified engine | misclassified shadowtune | filtered error engine | filtered error shadowtune | seconds |"
+  echo "|---|---|---|---|---|---|---|---|---|"
   printf '%s\n' "${rows[@]}"
 done
 echo

@@ -112,6 +112,9 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
     const json figures = {{"engine", {{"name", name}, {"version", version}, {"figures", figuresOf(a, a.engine)}}},
                           {"model", {{"figures", figuresOf(a, a.model)}}},
                           {"agreement", a.agreement()},
+                          {"factorAgreement", a.factorAgreement()},
+                          {"meanFactorDifference", a.meanFactorDifference()},
+                          {"borderlinePixels", a.borderline},
                           {"scoredPixels", a.scored},
                           {"engineMissingPixels", a.engineMissing},
                           {"size", {s.width, s.height}},
@@ -125,6 +128,8 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
     std::printf("%-22s %14.4f %14.4f\n", "filtered error", a.filteredError(a.engine), a.filteredError(a.model));
     std::printf("agreement %s of %zu scored pixels (%dx%d), %zu receiver pixels the engine did not draw; %.1f s -> %s\n", pct,
                 a.scored, s.width, s.height, a.engineMissing, seconds, opt.outDir.string().c_str());
+    std::printf("factors: mean |engine - model| %.4f; %.2f %% agree in state or within %.1f (%zu borderline pixels)\n",
+                a.meanFactorDifference(), 100.0 * a.factorAgreement(), double(metrics::kBorderlineFactor), a.borderline);
     return 0;
 }
 

@@ -42,6 +42,17 @@ TEST(EngineAgreementTest, ScoresReceiversTheEngineDrewOnly) {
     EXPECT_EQ(classes[3], AgreementClass::NotScored);
 }
 
+TEST(EngineAgreementTest, FactorsAHairApartAcrossTheThresholdAreBorderline) {
+    // Pixel 0: 0.52 against 0.47, states differ by 0.05 (borderline); pixel 1: 0.9 against 0.1,
+    // states differ by 0.8 (a real disagreement).
+    const std::vector<glm::vec4> engine{{0.52f, 0, 0.5f, 1}, {0.9f, 0, 0.5f, 1}, {1, 0, -0.5f, 1}, {1, -1, 0, 0}};
+    const EngineAgreement a = compareWithEngine(engine, fourPixels(0.47f, 0.1f), {1, 0, 0, 0}, {1.0f, 0.0f, 0.0f, 0.0f});
+    EXPECT_EQ(a.agree, 0u);
+    EXPECT_EQ(a.borderline, 1u);
+    EXPECT_DOUBLE_EQ(a.factorAgreement(), 0.5);
+    EXPECT_NEAR(a.meanFactorDifference(), (0.05 + 0.8) / 2.0, 1e-6);
+}
+
 TEST(EngineAgreementTest, AReceiverTheEngineDidNotDrawIsCountedApart) {
     const std::vector<glm::vec4> engine{{1, 0, 0.5f, 0}, {0, 0, 0.5f, 1}, {1, 0, 0, 1}, {1, 0, 0, 0}};
     const EngineAgreement a =
