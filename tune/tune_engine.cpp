@@ -1,5 +1,6 @@
 #include "tune/tune_engine.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -62,6 +63,25 @@ void babylonDims(Space& s, const Settings& base) {
     add("bias.normalOffset", engineNumbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2}));  // normalBias, metres
 }
 
+void godotDims(Space& s, const Settings& base) {
+    auto add = [&](std::string path, std::vector<nlohmann::json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
+    add("cascades.count", engineNumbers({1, 2, 4}));                               // directional_shadow_mode
+    add("cascades.shadowDistance", engineDistances(base));                          // directional_shadow_max_distance
+    s.dims.back().jumps = true;
+    add("cascades.mapSize", engineNumbers({512, 1024, 2048, 4096}));               // a quarter of the atlas
+    std::vector<nlohmann::json> pancakes{0.0, 5.0, 10.0, 20.0};                    // directional_shadow_pancake_size
+    for (double share : kZExtensionShares) pancakes.emplace_back(std::min(1024.0, farPlaneShare(base, share)));
+    add("cascades.zExtensionDistance", pancakes);
+    add("cascades.casterFaces", engineNames({"front", "back"}));                   // shadow_reverse_cull_face
+    add("filter.kind", engineNames({"pcf-vogel", "pcf2x2"}));                      // soft qualities, hard
+    add("filter.vogelTaps", engineNumbers({1, 4, 8, 16, 32}));                     // soft_shadow_filter_quality
+    add("filter.radius", engineNumbers({0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0}));      // shadow_blur x quality radius
+    add("bias.constant", engineNumbers({0.0, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5}));  // metres in split 0: shadow_bias
+    add("bias.normalOffset", engineNumbers({0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0}));  // shadow_normal_bias, texels
+    for (int i = 0; i < 3; ++i)                                                    // split_1..3
+        s.dims.push_back({"cascades.manualSplits[" + std::to_string(i) + "]", engineSplitDepths(base), true});
+}
+
 std::string threejsSnippet(const nlohmann::json& k) {
     std::string breaks = k.at("breaks").is_null() ? "" : k.at("breaks").dump();
     std::string js;
@@ -116,31 +136,50 @@ std::string babylonSnippet(const nlohmann::json& k) {
     return js;
 }
 
+// Godot 4: the light's property lines as a .tscn holds them, and project.godot's [rendering] lines.
+std::vector<PasteText> godotSnippets(const nlohmann::json& k) {
+    std::string light = "; Godot 4: shadowtune tune --engine godot. The sun's DirectionalLight3D properties: paste under\n"
+                        "; its [node ...] line in the .tscn (or set them in the inspector).\n"
+                        "shadow_enabled = true\n";
+    std::string project = "; Godot 4: shadowtune tune --engine godot. Merge into project.godot.\n[rendering]\n\n";
+    const std::string prefix = "rendering/";
+    for (auto it = k.begin(); it != k.end(); ++it) {
+        if (it.key().rfind(prefix, 0) == 0) project += it.key().substr(prefix.size()) + "=" + it.value().dump() + "\n";
+        else light += it.key() + " = " + it.value().dump() + "\n";
+    }
+    return {{"godot-light.tscn", light}, {"godot-project.godot", project}};
+}
+
 }  // namespace
 
-Settings ontoEngine(xport::WebEngine e, const Settings& s) {
+Settings ontoEngine(xport::Engine e, const Settings& s) {
     nlohmann::json knobs = xport::knobsFor(e, s).knobs;
-    if (e == xport::WebEngine::Babylon) {  // the knobs engineSpace keeps at their defaults
+    if (e == xport::Engine::Babylon) {  // the knobs engineSpace keeps at their defaults
         knobs["stabilizeCascades"] = false;
         knobs["depthClamp"] = true;
     }
     return xport::engineModel(e, knobs, s);
 }
 
-Space engineSpace(xport::WebEngine e, const Settings& base) {
+Space engineSpace(xport::Engine e, const Settings& base) {
     Space s;
-    if (e == xport::WebEngine::Threejs) threejsDims(s, base);
-    else babylonDims(s, base);
+    if (e == xport::Engine::ThreeJs) threejsDims(s, base);
+    else if (e == xport::Engine::Babylon) babylonDims(s, base);
+    else godotDims(s, base);
+    s.project = [e](const Settings& x) { return ontoEngine(e, x); };
     for (Dimension& d : s.dims) {
         const auto starts = [&](const char* prefix) { return d.path.rfind(prefix, 0) == 0; };
         d.polish = starts("bias.") || d.path == "filter.radius" || starts("cascades.manualSplits") ||
-                   d.path == "cascades.shadowDistance" || d.path == "cascades.blendBand";
+                   d.path == "cascades.shadowDistance" || d.path == "cascades.blendBand" ||
+                   d.path == "cascades.zExtensionDistance";
     }
     return s;
 }
 
-std::string engineSnippet(xport::WebEngine e, const nlohmann::json& knobs) {
-    return e == xport::WebEngine::Threejs ? threejsSnippet(knobs) : babylonSnippet(knobs);
+std::vector<PasteText> engineSnippets(xport::Engine e, const nlohmann::json& knobs) {
+    if (e == xport::Engine::ThreeJs) return {{"threejs.js", threejsSnippet(knobs)}};
+    if (e == xport::Engine::Babylon) return {{"babylon.js", babylonSnippet(knobs)}};
+    return godotSnippets(knobs);
 }
 
 }  // namespace st::tune

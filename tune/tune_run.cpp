@@ -204,7 +204,7 @@ public:
         if (opt_.size) std::tie(input_.output.width, input_.output.height) = *opt_.size;
         if (opt_.engine) {  // what the engine makes of the preset: the search starts there
             input_ = ontoEngine(*opt_.engine, input_);
-            say("tuning for " + xport::webEngineName(*opt_.engine) + ": its knobs only (docs/engines.md)");
+            say("tuning for " + xport::engineName(*opt_.engine) + ": its knobs only (docs/engines.md)");
         }
         presetDir_ = fs::absolute(opt_.preset).parent_path();
         views_ = tuneViews(input_, opt_.views, opt_.holdOutEvery);
@@ -275,8 +275,16 @@ private:
         std::vector<Settings> from = starts(input_);
         // A reference's method is within budget by definition; so is it with an analytic bias.
         for (const auto& [name, r] : refs_) from.insert(from.end(), {r, texelBias(r), planeBias(r), seenBy(r), seenNear(r)});
-        if (opt_.engine)  // every start as the engine can take it
-            for (Settings& s : from) s = ontoEngine(*opt_.engine, s);
+        if (opt_.engine) {  // every start as the engine can take it; one it cannot (splits past its end) is dropped
+            std::vector<Settings> onto;
+            for (const Settings& s : from) {
+                try {
+                    onto.push_back(ontoEngine(*opt_.engine, s));
+                } catch (const std::exception&) {
+                }
+            }
+            from = std::move(onto);
+        }
         const std::optional<Settings> earlier = earlierTuned();
         result_ = search(from, space, [this](const Settings& s) { return judge(measured(s, "tuned"), objective_); }, so);
         if (!result_.stopped && earlier) keepIfBetter(*earlier);
@@ -457,7 +465,7 @@ private:
         // For an engine with no budget given: its defaults on this scene and views set the budget
         // and are the baseline the tune must beat.
         if (opt_.engine && !opt_.budgetMs && !opt_.budgetMiB && opt_.budgetFrom.empty())
-            refs_.push_back({xport::webEngineName(*opt_.engine) + "-defaults",
+            refs_.push_back({xport::engineName(*opt_.engine) + "-defaults",
                              xport::engineModel(*opt_.engine, xport::defaultKnobs(*opt_.engine), input_)});
         for (const fs::path& file : opt_.compareWith) {
             std::vector<std::string> adapted;
@@ -478,7 +486,7 @@ private:
                 {"holdOutEvery", opt_.holdOutEvery},
                 {"seed", opt_.seed},
                 {"costProfile", metrics::profileName(*opt_.profile)}};
-        if (opt_.engine) j["engine"] = xport::webEngineName(*opt_.engine);
+        if (opt_.engine) j["engine"] = xport::engineName(*opt_.engine);
         // Only when not the default, so folders of earlier tunes still resume.
         if (!opt_.constraints) j["constraints"] = "none";
         if (opt_.front) j["front"] = true;
@@ -582,6 +590,13 @@ private:
                 } catch (const SettingsError&) {
                     continue;
                 }
+                if (opt_.engine) {  // a field put back must still be something the engine can set
+                    try {
+                        without = ontoEngine(*opt_.engine, without);
+                    } catch (const std::exception&) {
+                        continue;
+                    }
+                }
                 if (without == c.settings || !validate(without).empty()) continue;
                 if (std::find(visited.begin(), visited.end(), without) != visited.end()) continue;
                 visited.push_back(without);
@@ -599,13 +614,16 @@ private:
         result_.best = result_.evaluated.size() - 1;
     }
 
-    // <engine>.json: the knobs (engine-check --knobs takes its "knobs"); <engine>.js: paste-ready.
-    void writeEngineOutputs(xport::WebEngine e, const Settings& best) const {
+    // <engine>.json: the knobs (engine-check --knobs takes its "knobs"); the paste-ready text beside.
+    void writeEngineOutputs(xport::Engine e, const Settings& best) const {
         const xport::EngineKnobs k = xport::knobsFor(e, best);
-        const std::string name = xport::webEngineName(e);
+        const std::string name = xport::engineName(e);
         writeTextAtomic(opt_.outDir / (name + ".json"), Json{{"engine", name}, {"knobs", k.knobs}, {"lacks", k.lacks}}.dump(2) + "\n");
-        writeTextAtomic(opt_.outDir / (name + ".js"), engineSnippet(e, k.knobs));
-        say("wrote " + (opt_.outDir / (name + ".js")).string() + (k.lacks.empty() ? "" : " (lacks: " + k.lacks.front() + ")"));
+        for (const PasteText& t : engineSnippets(e, k.knobs)) {
+            writeTextAtomic(opt_.outDir / t.file, t.text);
+            say("wrote " + (opt_.outDir / t.file).string());
+        }
+        if (!k.lacks.empty()) say("  " + name + " lacks: " + k.lacks.front());
     }
 
     void writeOutputs(const Candidate& best, double seconds) {

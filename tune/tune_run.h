@@ -57,7 +57,7 @@ struct TuneOptions {
     bool rendererPerView = true;
     // Tune for this engine (tune_engine.h): its knobs only; tuned.json is what it renders, and
     // <engine>.json / <engine>.js its knobs and paste-ready text.
-    std::optional<xport::WebEngine> engine;
+    std::optional<xport::Engine> engine;
 };
 
 struct TuneOutcome {

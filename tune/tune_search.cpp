@@ -62,7 +62,8 @@ public:
 
     // The index of `s` among the evaluated points, evaluating it if new; nullopt once the
     // evaluations are spent or a stop was requested.
-    std::optional<std::size_t> visit(const Settings& s, const std::string& move) {
+    std::optional<std::size_t> visit(const Settings& given, const std::string& move) {
+        const Settings s = onto(given);
         const std::string key = toOrderedJson(s).dump();
         if (const auto it = seen_.find(key); it != seen_.end()) return it->second;
         Candidate c{s, {}, move, false};
@@ -109,7 +110,8 @@ public:
     }
 
     // The screen of `s` (none: settings the validator or the screen refuses).
-    std::optional<Evaluation> screened(const Settings& s) {
+    std::optional<Evaluation> screened(const Settings& given) {
+        const Settings s = onto(given);
         const std::string key = toOrderedJson(s).dump();
         if (const auto it = screens_.find(key); it != screens_.end()) return it->second;
         if (!validate(s).empty()) return std::nullopt;
@@ -404,7 +406,17 @@ private:
     const Candidate& at(std::size_t i) const { return out_.evaluated[i]; }
     int totalScreenings() const { return opt_.screenings > 0 ? opt_.screenings : kScreensPerEvaluation * opt_.evaluations; }
     int screeningLimit() const { return screenCap_; }
-    bool seen(const Settings& s) const { return seen_.count(toOrderedJson(s).dump()) != 0; }
+    bool seen(const Settings& s) const { return seen_.count(toOrderedJson(onto(s)).dump()) != 0; }
+
+    // A point the projection refuses stays as it is: the validator or the evaluation then refuses it.
+    Settings onto(const Settings& s) const {
+        if (!space_.project) return s;
+        try {
+            return space_.project(s);
+        } catch (const std::exception&) {
+            return s;
+        }
+    }
 
     void report(const std::string& trying) {
         if (!opt_.progress) return;

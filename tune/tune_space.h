@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ struct Dimension {
 
 struct Space {
     std::vector<Dimension> dims;
+    // When set, every point the search screens or evaluates is first put through it: an engine's
+    // space (tune_engine.h) maps a move onto what the engine can take (Godot: 1, 2 or 4 splits,
+    // its bias per split), so the search never scores settings the engine cannot set.
+    std::function<Settings(const Settings&)> project;
     const Dimension* find(const std::string& path) const;
 };
 

@@ -16,9 +16,10 @@ struct EngineCheckArgs {
 };
 
 int runArgs(EngineCheckArgs& a) {
-    const auto engine = xport::parseWebEngine(a.engine);
-    if (!engine) {
-        std::fprintf(stderr, "error: --engine: '%s' is not one of %s\n", a.engine.c_str(), xport::webEngineList().c_str());
+    const auto engine = xport::parseKnobEngine(a.engine);
+    if (!engine || !xport::runsHere(*engine)) {
+        std::fprintf(stderr, "error: --engine: '%s' is not one of %s%s\n", a.engine.c_str(), xport::loopEngineList().c_str(),
+                     engine ? " (the engines that run here; its model is a reading of its source, docs/engines.md)" : "");
         return 2;
     }
     a.opt.engine = *engine;
@@ -46,7 +47,7 @@ void addEngineCheckCommand(CLI::App& cli, int& exitCode) {
         "engine-check", "Render a preset's view in the real engine (three.js, Babylon.js) and in shadowtune's model of it; "
                         "score both against the ray-cast truth and report their pixel agreement");
     cmd->add_option("preset", args->opt.preset, "Preset JSON file: its scene, camera, sun and size")->required();
-    cmd->add_option("--engine", args->engine, "Engine: " + xport::webEngineList())->required();
+    cmd->add_option("--engine", args->engine, "Engine: " + xport::loopEngineList())->required();
     cmd->add_option("--out", args->opt.outDir, "Output folder")->capture_default_str();
     cmd->add_option("--size", args->size, "Output size WxH (default: the preset's)");
     cmd->add_flag("--defaults", args->opt.defaults, "Use the engine's default shadow settings, not the preset's");

@@ -53,9 +53,9 @@ json sceneJob(const Settings& s, const fs::path& presetDir, const fs::path& out)
     return scene;
 }
 
-json jobOf(xport::WebEngine e, const Settings& s, const json& knobs, const json& scene, const fs::path& out) {
+json jobOf(xport::Engine e, const Settings& s, const json& knobs, const json& scene, const fs::path& out) {
     const CameraSettings& c = s.camera;
-    return {{"engine", xport::webEngineName(e)},
+    return {{"engine", xport::engineName(e)},
             {"width", s.output.width},
             {"height", s.output.height},
             {"scene", scene},
@@ -137,7 +137,7 @@ int runEngineCheck(const EngineCheckOptions& opt) {
         return 2;
     }
     for (const std::string& l : knobs.lacks)
-        std::printf("%s lacks: %s\n", xport::webEngineName(opt.engine).c_str(), l.c_str());
+        std::printf("%s lacks: %s\n", xport::engineName(opt.engine).c_str(), l.c_str());
     std::string error;
     const fs::path log = opt.outDir / "engine.log";
     const pid_t child = spawnLogged({"/usr/bin/env", "node", (enginesDir / "run.mjs").string(),

@@ -15,7 +15,7 @@ namespace st::app {
 
 struct EngineCheckOptions {
     std::filesystem::path preset;
-    xport::WebEngine engine = xport::WebEngine::Threejs;
+    xport::Engine engine = xport::Engine::ThreeJs;
     std::filesystem::path outDir = "engine-check";
     std::optional<int> width, height;   // --size
     bool defaults = false;              // the engine's default knobs instead of the preset's export

@@ -86,7 +86,7 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
         fe[i] = engine[i].x, ce[i] = engine[i].w;
         fm[i] = s.shadow[i].y, cm[i] = s.covered(i) ? 1.0f : 0.0f;
     }
-    const std::string name = xport::webEngineName(opt.engine);
+    const std::string name = xport::engineName(opt.engine);
     const json info = engineInfo(opt.outDir / "engine" / "engine.json");
     const std::string version = info.value("version", std::string("?"));
     std::array<std::size_t, 5> counts{};

@@ -61,9 +61,9 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
         ->check(CLI::IsMember({"artifacts", "none"}))
         ->capture_default_str();
     cmd->add_option("--engine", *engine,
-                    "Tune for this engine: its own knobs only (" + xport::webEngineList() +
-                    "); writes ENGINE.json (its knobs) and ENGINE.js (paste-ready) beside tuned.json")
-        ->check(CLI::IsMember({"threejs", "babylon"}));
+                    "Tune for this engine: its own knobs only (" + xport::knobEngineList() +
+                    "); writes ENGINE.json (its knobs) and its paste-ready text beside tuned.json")
+        ->check(CLI::IsMember({"threejs", "babylon", "godot"}));
     cmd->add_flag("--front", opt->front,
                   "Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point: front/ "
                   "then charts cost against error from the cheapest to the budget (docs/tuning.md#front)");
@@ -96,7 +96,7 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
     cmd->add_flag("--debug-gl", opt->debugGl, "Debug GL context; a medium/high KHR_debug message fails the tune");
     cmd->callback([opt, budgetMs, budgetMiB, size, shard, constraints, engine, ms, mib, &exitCode] {
         opt->noConstraints = *constraints == "none";
-        if (!engine->empty()) opt->engine = xport::parseWebEngine(*engine);
+        if (!engine->empty()) opt->engine = xport::parseKnobEngine(*engine);
         if (!shard->empty() && !parseShard(*shard, opt->shardIndex, opt->shardCount)) {
             std::fprintf(stderr, "error: --shard: expected k/n with 1 <= k <= n <= 1000, got '%s'\n", shard->c_str());
             exitCode = 2;

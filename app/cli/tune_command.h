@@ -26,7 +26,7 @@ struct TuneCommandOptions {
     int evaluations = 80;
     bool noConstraints = false;  // --constraints none
     bool front = false;
-    std::optional<xport::WebEngine> engine;  // --engine: that engine's knobs only
+    std::optional<xport::Engine> engine;  // --engine: that engine's knobs only
     long stopAfter = -1;
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile

@@ -8,15 +8,22 @@
 
 namespace st::xport {
 
-std::optional<WebEngine> parseWebEngine(const std::string& name) {
-    if (name == "threejs" || name == "three.js" || name == "three") return WebEngine::Threejs;
-    if (name == "babylon" || name == "babylonjs" || name == "babylon.js") return WebEngine::Babylon;
-    return std::nullopt;
+std::optional<Engine> parseKnobEngine(const std::string& name) {
+    if (name == "three.js" || name == "three") return Engine::ThreeJs;
+    if (name == "babylonjs" || name == "babylon.js") return Engine::Babylon;
+    const std::optional<Engine> e = parseEngine(name);
+    return e && hasKnobTable(*e) ? e : std::nullopt;
 }
 
-std::string webEngineName(WebEngine e) { return e == WebEngine::Threejs ? "threejs" : "babylon"; }
+bool hasKnobTable(Engine e) { return e == Engine::ThreeJs || e == Engine::Babylon || e == Engine::Godot; }
 
-std::string webEngineList() { return "threejs, babylon"; }
+bool runsHere(Engine e) { return e == Engine::ThreeJs || e == Engine::Babylon; }
+
+std::string engineName(Engine e) { return std::string(kEngineNames[std::size_t(e)]); }
+
+std::string knobEngineList() { return "threejs, babylon, godot"; }
+
+std::string loopEngineList() { return "threejs, babylon"; }
 
 nlohmann::json withDefaults(const nlohmann::json& defaults, const nlohmann::json& given) {
     nlohmann::json out = defaults;
@@ -51,17 +58,29 @@ int knobInt(const nlohmann::json& knobs, const char* name, int lo, int hi) {
 
 std::vector<float> presetSplits(const Settings& s) { return csm::planSplits(s, std::nullopt); }
 
-nlohmann::json defaultKnobs(WebEngine e) {
-    return e == WebEngine::Threejs ? threejsDefaultKnobs() : babylonDefaultKnobs();
+namespace {
+void requireTable(Engine e) {
+    if (!hasKnobTable(e))
+        throw std::invalid_argument(engineName(e) + " has no knob table yet (engines with one: " + knobEngineList() + ")");
+}
+}  // namespace
+
+nlohmann::json defaultKnobs(Engine e) {
+    requireTable(e);
+    return e == Engine::ThreeJs ? threejsDefaultKnobs() : e == Engine::Babylon ? babylonDefaultKnobs() : godotDefaultKnobs();
 }
 
-EngineKnobs knobsFor(WebEngine e, const Settings& s) {
-    return e == WebEngine::Threejs ? threejsKnobsFor(s) : babylonKnobsFor(s);
+EngineKnobs knobsFor(Engine e, const Settings& s) {
+    requireTable(e);
+    return e == Engine::ThreeJs ? threejsKnobsFor(s) : e == Engine::Babylon ? babylonKnobsFor(s) : godotKnobsFor(s);
 }
 
-Settings engineModel(WebEngine e, const nlohmann::json& knobs, const Settings& view) {
+Settings engineModel(Engine e, const nlohmann::json& knobs, const Settings& view) {
+    requireTable(e);
     try {
-        return e == WebEngine::Threejs ? threejsModel(knobs, view) : babylonModel(knobs, view);
+        return e == Engine::ThreeJs   ? threejsModel(knobs, view)
+               : e == Engine::Babylon ? babylonModel(knobs, view)
+                                      : godotModel(knobs, view);
     } catch (const nlohmann::json::exception& ex) {
         throw std::invalid_argument(std::string("settings: ") + ex.what());
     }

@@ -27,6 +27,10 @@ EngineKnobs threejsKnobsFor(const Settings& s);
 }  // namespace st::xport
 
 namespace st::xport {
+nlohmann::json godotDefaultKnobs();
+Settings godotModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs godotKnobsFor(const Settings& s);
+
 nlohmann::json babylonDefaultKnobs();
 Settings babylonModel(const nlohmann::json& knobs, const Settings& view);
 EngineKnobs babylonKnobsFor(const Settings& s);

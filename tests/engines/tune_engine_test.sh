@@ -4,7 +4,8 @@
 #   - the budget defaults to the engine defaults' modelled cost (a reference named <engine>-defaults);
 #   - the tune never emits a setting the engine lacks (<engine>.json "lacks" is empty, and the tuned
 #     preset exports to the engine with no "no equivalent" item of its own);
-#   - <engine>.js is written, and the knobs run in the real engine through engine-check: the engine's
+#   - <engine>.js is written and, run against stand-ins of the engine's objects
+#     (engines/test/snippet_knobs.mjs), sets exactly the knobs of <engine>.json; and the knobs run in the real engine through engine-check: the engine's
 #     and the model's misclassified shares agree within 1.5 points, and where the model reads under
 #     20 % (no acne stripes) on >= 98 % of the pixels too.
 # Usage: tune_engine_test.sh SHADOWTUNE PRESETS_DIR
@@ -28,6 +29,14 @@ for engine in threejs babylon; do
   lacking=$("$st" export "$out/tuned.json" --to "$engine" --json | jq '[.noEquivalent[] | select(.name | startswith("("))] | length')
   [[ $lacking == 0 ]] || fail "$engine: export lists $lacking knobs $engine lacks"
   jq .knobs "$out/$engine.json" >"$out/knobs.json"
+  node "$(dirname "$0")/../../engines/test/snippet_knobs.mjs" "$engine" "$out/$engine.js" >"$out/pasted.json" ||
+    fail "$engine: the pasted snippet does not run: $(cat "$out/pasted.json")"
+  diff -u <(jq -S . "$out/knobs.json") <(jq -S . "$out/pasted.json") >&2 || fail "$engine: the snippet sets other knobs than $engine.json"
+  # the reader can fail: a misspelt knob is refused
+  sed -e 's/shadow\.radius/shadow.radios/; s/csm\.lambda/csm.lamda/' "$out/$engine.js" >"$out/typo.js"
+  if node "$(dirname "$0")/../../engines/test/snippet_knobs.mjs" "$engine" "$out/typo.js" >/dev/null 2>&1; then
+    fail "$engine: a snippet with a misspelt knob read back"
+  fi
   "$st" engine-check "$presets/default.json" --engine "$engine" --knobs "$out/knobs.json" --size 160x90 --out "$out/check" >/dev/null 2>&1 ||
     fail "$engine: engine-check of the tuned knobs exited $?"
   agree=$(jq .agreement "$out/check/figures.json")
