@@ -137,7 +137,7 @@ int runEngineCheck(const EngineCheckOptions& opt) {
         return 2;
     }
     for (const std::string& l : knobs.lacks)
-        std::printf("%s lacks: %s\n", xport::engineName(opt.engine).c_str(), l.c_str());
+        if (!opt.quiet) std::printf("%s lacks: %s\n", xport::engineName(opt.engine).c_str(), l.c_str());
     std::string error;
     const fs::path log = opt.outDir / "engine.log";
     const pid_t child = spawnLogged({"/usr/bin/env", "node", (enginesDir / "run.mjs").string(),

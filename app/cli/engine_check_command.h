@@ -22,6 +22,7 @@ struct EngineCheckOptions {
     std::filesystem::path knobsFile;    // --knobs: a JSON object of the engine's knobs
     std::filesystem::path enginesDir;   // engines/ (run.mjs); empty: next to the sources
     std::vector<std::string> modelSets; // --model-set PATH=JSON: a field of the model changed (to see the check fail)
+    bool quiet = false;                 // no figure table on stdout (a tune's proof prints its own)
 #ifdef NDEBUG
     bool debugContext = false;
 #else

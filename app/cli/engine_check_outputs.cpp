@@ -123,6 +123,7 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
                           {"engineTimings", info.value("timings", json::object())},
                           {"seconds", seconds}};
     writeTextAtomic(opt.outDir / "figures.json", figures.dump(2) + "\n");
+    if (opt.quiet) return 0;
     std::printf("%-22s %14s %14s\n", "", (name + " " + version).c_str(), "shadowtune");
     std::printf("%-22s %13.3f%% %13.3f%%\n", "misclassified", 100.0 * a.misclassified(a.engine), 100.0 * a.misclassified(a.model));
     std::printf("%-22s %14.4f %14.4f\n", "filtered error", a.filteredError(a.engine), a.filteredError(a.model));

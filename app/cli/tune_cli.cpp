@@ -64,6 +64,9 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
                     "Tune for this engine: its own knobs only (" + xport::knobEngineList() +
                     "); writes ENGINE.json (its knobs) and its paste-ready text beside tuned.json")
         ->check(CLI::IsMember({"threejs", "babylon", "godot"}));
+    cmd->add_flag("--no-engine-check", opt->noEngineCheck,
+                  "With --engine threejs or babylon: skip running the tuned knobs and the defaults in the real engine "
+                  "on the tune's views (summary.json's engine object, explain.md's table)");
     cmd->add_flag("--front", opt->front,
                   "Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point: front/ "
                   "then charts cost against error from the cheapest to the budget (docs/tuning.md#front)");

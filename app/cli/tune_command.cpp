@@ -2,6 +2,7 @@
 
 #include "app/cost_profile_file.h"
 #include "app/cli/interrupt_watch.h"
+#include "app/cli/tune_engine_proof.h"
 #include "metrics/cost_profile_json.h"
 #include "renderer/context/egl_context.h"
 #include "renderer/gpu/debug_output.h"
@@ -45,6 +46,13 @@ private:
     static constexpr int kWidth = 118;
     bool tty_ = false, open_ = false;
 };
+
+// The engine's own figures, or why it could not give them: the tune itself stands either way.
+void reportProof(const EngineProof& p) {
+    if (!p.ran) return;
+    if (p.error.empty()) std::printf("%s\n", p.line.c_str());
+    else std::fprintf(stderr, "warning: the tune is not proven in the engine: %s\n", p.error.c_str());
+}
 
 }  // namespace
 
@@ -93,6 +101,8 @@ int runTuneCommand(const TuneCommandOptions& opt) {
         }
         std::printf("%s\n", out.message.c_str());
         if (out.stopped) return InterruptWatch::requested() ? 130 : 0;
+        ctx.reset();  // engine-check makes its own context
+        if (opt.shardIndex == 1) reportProof(proveInEngine(opt));
         return 0;
     } catch (const SettingsError& e) {
         for (const std::string& m : e.messages()) std::fprintf(stderr, "error: %s\n", m.c_str());

@@ -27,6 +27,7 @@ struct TuneCommandOptions {
     bool noConstraints = false;  // --constraints none
     bool front = false;
     std::optional<xport::Engine> engine;  // --engine: that engine's knobs only
+    bool noEngineCheck = false;            // --no-engine-check: skip the proof in the engine (tune_engine_proof.h)
     long stopAfter = -1;
     std::optional<std::pair<int, int>> size;  // override the preset's output size
     std::filesystem::path costProfile;  // empty: the shipped llvmpipe profile

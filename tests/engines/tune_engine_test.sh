@@ -4,6 +4,8 @@
 #   - the budget defaults to the engine defaults' modelled cost (a reference named <engine>-defaults);
 #   - the tune never emits a setting the engine lacks (<engine>.json "lacks" is empty, and the tuned
 #     preset exports to the engine with no "no equivalent" item of its own);
+#   - the tune ends with engine-check of its knobs and the defaults on its views: summary.json's
+#     engine object and explain.md's table (the figures below are read there);
 #   - <engine>.js is written and, run against stand-ins of the engine's objects
 #     (engines/test/snippet_knobs.mjs), sets exactly the knobs of <engine>.json; and the knobs run in the real engine through engine-check: the engine's
 #     and the model's misclassified shares agree within 1.5 points, and where the model reads under
@@ -37,18 +39,22 @@ for engine in threejs babylon; do
   if node "$(dirname "$0")/../../engines/test/snippet_knobs.mjs" "$engine" "$out/typo.js" >/dev/null 2>&1; then
     fail "$engine: a snippet with a misspelt knob read back"
   fi
-  "$st" engine-check "$presets/default.json" --engine "$engine" --knobs "$out/knobs.json" --size 160x90 --out "$out/check" >/dev/null 2>&1 ||
-    fail "$engine: engine-check of the tuned knobs exited $?"
-  agree=$(jq .agreement "$out/check/figures.json")
-  me=$(jq '.engine.figures."accuracy.misclassified"' "$out/check/figures.json")
-  mm=$(jq '.model.figures."accuracy.misclassified"' "$out/check/figures.json")
+  # the tune ends in the engine: summary.json's engine object, explain.md's table
+  jq -e '.engine.tuned.tuned.views == 2 and .engine.defaults.tuned.views == 2' "$out/summary.json" >/dev/null ||
+    fail "$engine: summary.json has no engine object over the 2 views: $(jq -c .engine "$out/summary.json")"
+  grep -q "^## In the engine itself: $engine " "$out/explain.md" || fail "$engine: explain.md has no table of the engine's figures"
+  [[ -s $out/engine-check/tuned/view-1/engine.png ]] || fail "$engine: the engine's image of the tuned knobs is missing"
+  agree=$(jq .engine.tuned.tuned.agreement "$out/summary.json")
+  me=$(jq '.engine.tuned.tuned."accuracy.misclassified"' "$out/summary.json")
+  mm=$(jq '.engine.tuned.tuned.model."accuracy.misclassified"' "$out/summary.json")
   echo "$engine: tuned knobs $(jq -c .knobs "$out/$engine.json"); engine agrees with the model on $agree, misclassified $me / $mm"
   # Where the short search still leaves acne (Babylon's bias), the stripes' pixels hinge on rounding
   # (docs/engines.md#the-proof): the shares, not the pixels, are what must agree there.
-  diff=$(echo "d = $me - $mm; if (d < 0) d = -d; d" | bc -l)
-  if [[ $(echo "$mm < 0.2" | bc -l) == 1 ]]; then
-    [[ $(echo "$agree >= 0.98" | bc -l) == 1 ]] || fail "$engine: the engine agrees with the model on $agree < 0.98"
+  # (jq, not bc: jq prints small shares as 5e-05)
+  if jq -e '.engine.tuned.tuned | .model."accuracy.misclassified" < 0.2 and .agreement < 0.98' "$out/summary.json" >/dev/null; then
+    fail "$engine: the engine agrees with the model on $agree < 0.98"
   fi
-  [[ $(echo "$diff <= 0.015" | bc -l) == 1 ]] || fail "$engine: misclassified $me in the engine, $mm in the model"
+  jq -e '.engine.tuned.tuned | (."accuracy.misclassified" - .model."accuracy.misclassified") | fabs <= 0.015' "$out/summary.json" >/dev/null ||
+    fail "$engine: misclassified $me in the engine, $mm in the model"
 done
 echo "tune_engine_test: ok"

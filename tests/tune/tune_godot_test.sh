@@ -22,6 +22,7 @@ out=$work/tune
   fail "tune exited $? ($(tail -3 "$work/tune.log"))"
 grep -q "reference godot-defaults:" "$work/tune.log" || fail "the budget is not the Godot defaults'"
 [[ -s $out/godot.json && -s $out/godot-light.tscn && -s $out/godot-project.godot && -s $out/tuned.json ]] || fail "outputs missing"
+jq -e '.engine == null' "$out/summary.json" >/dev/null || fail "summary.json claims figures measured in Godot, which does not run here"
 [[ $(jq '.lacks | length' "$out/godot.json") == 0 ]] || fail "the tune used knobs Godot lacks: $(jq -c .lacks "$out/godot.json")"
 
 # Godot's text back to JSON: every value in these files is a JSON scalar (true, 0.1, 4096).
