@@ -92,7 +92,12 @@ Settings threejsModel(const json& given, const Settings& view) {
     } else if (type == "BasicShadowMap") {
         f.kind = FilterKind::Hard;
     } else if (type == "VSMShadowMap") {
-        f.kind = FilterKind::Vsm;  // approximate: three.js blurs by radius and remaps bleeding (0.3, 0.65)
+        // shadowmap_pars_fragment.glsl.js:239: the variance floored at 1e-7. Approximate: three.js
+        // blurs by radius and remaps bleeding ((p - 0.3) / 0.65, line 248), not modelled.
+        f.kind = FilterKind::Vsm;
+        f.minVariance = 1e-7f;
+        // WebGLShadowMap.js:484-486: for VSM a material casts its own side, not the flipped one.
+        if (k.at("shadowSide").is_null()) c.casterFaces = CasterFaces::Front;
     } else {
         throw std::invalid_argument("settings.shadowMapType: '" + type + "' is not PCFShadowMap, BasicShadowMap or VSMShadowMap");
     }
