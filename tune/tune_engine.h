@@ -21,14 +21,6 @@ Settings ontoEngine(xport::Engine e, const Settings& s);
 // stay at their defaults, whose model is exact, where their other values are approximate).
 Space engineSpace(xport::Engine e, const Settings& base);
 
-// The knobs as the engine's own source text, to paste, one file each: three.js (`threejs.js`: the
-// CSM addon and its lights), Babylon.js (`babylon.js`: the CascadedShadowGenerator's properties),
-// Godot (`godot-light.tscn`: the DirectionalLight3D's property lines; `godot-project.godot`: the
-// [rendering] settings of project.godot).
-struct PasteText {
-    std::string file;
-    std::string text;
-};
-std::vector<PasteText> engineSnippets(xport::Engine e, const nlohmann::json& knobs);
+
 
 }  // namespace st::tune

@@ -1,5 +1,6 @@
 #include "tune/tune_run.h"
 
+#include "renderer/export/engine_snippets.h"
 #include "tune/tune_engine.h"
 
 #include "metrics/cost.h"
@@ -619,7 +620,7 @@ private:
         const xport::EngineKnobs k = xport::knobsFor(e, best);
         const std::string name = xport::engineName(e);
         writeTextAtomic(opt_.outDir / (name + ".json"), Json{{"engine", name}, {"knobs", k.knobs}, {"lacks", k.lacks}}.dump(2) + "\n");
-        for (const PasteText& t : engineSnippets(e, k.knobs)) {
+        for (const xport::PasteText& t : xport::engineSnippets(e, k.knobs)) {
             writeTextAtomic(opt_.outDir / t.file, t.text);
             say("wrote " + (opt_.outDir / t.file).string());
         }

@@ -129,6 +129,10 @@ void EditorUi::requestQuit() { requestQuitFrom(*state_, state_->dirty); }
 
 bool EditorUi::dirty() const { return state_->dirty; }
 
+void EditorUi::setEngine(std::optional<xport::Engine> engine) { state_->engine = {engine, {}, {}}; }
+
+std::optional<xport::Engine> EditorUi::engine() const { return state_->engine.engine; }
+
 std::string EditorUi::windowTitle() const { return documentTitle(state_->doc, state_->dirty); }
 
 const std::filesystem::path& EditorUi::presetFile() const { return state_->doc.file; }

@@ -14,6 +14,7 @@
 // Every widget comes from the settings field table and writes through FieldInfo::set, clamped to
 // the field's range; cross-field problems (validate()) are shown in red, never thrown. Presets
 // are loaded and saved here (atomically); the app only lists the files and reacts to requests.
+#include "renderer/export/engine_export.h"
 #include "renderer/render/frame_stats.h"
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/settings.h"
@@ -167,6 +168,10 @@ public:
     void requestQuit();
 
     bool dirty() const;                                // as of the last draw()
+    // The engine the artist ships in (the Settings panel's Engine section): its knobs shown, what it
+    // lacks greyed, the Tune panel tuning in its knobs. nullopt: every method (the default).
+    void setEngine(std::optional<xport::Engine> engine);
+    std::optional<xport::Engine> engine() const;
     std::string windowTitle() const;                   // "shadowtune - default.json *"
     const std::filesystem::path& presetFile() const;   // empty: untitled
     const std::vector<std::string>& errors() const;    // of the last failed load/save (shown in the UI)

@@ -3,11 +3,16 @@
 // UiInputs, edits Settings only through the field table and reports through UiRequests.
 #include "ui/ui_state.h"
 
+#include <string_view>
+
 namespace st::ui {
 
 void drawMenuBar(UiFrame& f);         // menu_bar.cpp: File / Edit / View
 void handleShortcuts(UiFrame& f);     // shortcuts.cpp: Ctrl+Z, Ctrl+Shift+Z, Ctrl+S, F, Tab, F1
 void drawSettingsPanel(UiFrame& f);   // settings_panel.cpp: every field, grouped, with issues
+void drawEngineSection(UiFrame& f);   // engine_section.cpp: Engine choice, its knobs, lacks, paste-ready text
+// engine_section.cpp: whether the chosen engine has no knob for the field at `path` (greyed then).
+bool engineLacksField(const UiFrame& f, std::string_view path);
 void drawPresetsPanel(UiFrame& f);    // presets_panel.cpp: list, save, save as, undo, messages
 void drawShadowViewer(UiFrame& f);    // shadow_viewer.cpp: a tile per cascade, zoom on click
 void drawSideView(UiFrame& f);        // side_view.cpp: picture-in-picture with orbit input

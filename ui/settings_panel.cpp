@@ -2,6 +2,7 @@
 // its JSON path in collapsing headers (the knobs that only reproduce a bug under a closed "Debug"
 // one), with derived figures beside the knobs and the problems validate() finds shown in red
 // (under the field, and listed under the panel).
+#include "renderer/export/engine_knobs.h"
 #include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/validation.h"
 #include "ui/field_overrides.h"
@@ -73,7 +74,15 @@ void drawField(UiFrame& f, const FieldInfo& field) {
     ImGui::PushID(field.path.data(), field.path.data() + field.path.size());
     const FieldOverride custom = overrideFor(field.path);
     const std::optional<Settings> before = affectsMapCost(field.path) ? std::optional<Settings>(f.s) : std::nullopt;
+    const bool greyed = engineLacksField(f, field.path);
+    if (greyed) ImGui::BeginDisabled();
     bool changed = custom ? custom(field, f) : drawFieldWidget(field, f.s, f.state.rects, f.state.fieldEdits);
+    if (greyed) {
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("%s has no knob for this: it keeps its own value (see the Engine section)",
+                              xport::engineName(*f.state.engine.engine).c_str());
+    }
     if (changed && before && holdExpensiveEdit(f, field, *before)) changed = false;
     if (changed) keepCascadeListsValid(f.s, field.path);
     f.edited = f.edited || changed;
@@ -117,6 +126,7 @@ void drawGroup(UiFrame& f, const FieldGroup& group) {
 
 void drawFields(UiFrame& f) {
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    drawEngineSection(f);
     for (const FieldGroup& group : groupFields()) drawGroup(f, group);
     if (ImGui::CollapsingHeader("Performance", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawTimingPlots(f.state.timing, f.in.stats);

@@ -2,6 +2,7 @@
 // Go and Cancel; while the app's `shadowtune tune` child runs, its progress and the points
 // measured so far on a Pareto chart with the current settings and A marked; at the end the
 // explanation, each line applicable alone, and the tuned settings, each apply one undo step.
+#include "renderer/export/engine_knobs.h"
 #include "ui/document_actions.h"
 #include "ui/ui_colours.h"
 #include "ui/panels.h"
@@ -123,8 +124,13 @@ void runControls(UiFrame& f, const std::string& problem) {
         progress(f, *v);
         return;
     }
+    if (f.state.engine.engine)
+        ImGui::TextDisabled("Tunes in %s's knobs only (Settings > Engine).", xport::engineName(*f.state.engine.engine).c_str());
     ImGui::BeginDisabled(!problem.empty());
-    if (ImGui::Button("Go")) f.req.tuneStart = f.state.tune.edit;
+    if (ImGui::Button("Go")) {
+        f.req.tuneStart = f.state.tune.edit;
+        if (f.state.engine.engine) f.req.tuneStart->engine = xport::engineName(*f.state.engine.engine);
+    }
     ImGui::EndDisabled();
     recordItem(f.state.rects, "tune.go");
     if (!problem.empty()) {

@@ -22,6 +22,7 @@ struct TuneRequest {
     int views = 3;                  // the camera and viewpoints around it; the last one is held out
     int width = 320, height = 180;  // measured at this size
     bool front = false;             // `tune --front`: a quarter of the evaluations descend to cheaper settings
+    std::string engine;             // `tune --engine`: the Engine section's choice; empty: every method
     bool operator==(const TuneRequest&) const = default;
 };
 

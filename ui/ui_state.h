@@ -5,6 +5,7 @@
 #include "renderer/settings/validation.h"
 #include "ui/compare_state.h"
 #include "ui/document.h"
+#include "ui/engine_state.h"
 #include "ui/editor_ui.h"
 #include "ui/field_widgets.h"
 #include "ui/history.h"
@@ -70,6 +71,7 @@ struct UiState {
     Layout layout;                         // this frame's panel and scene rectangles (beginFrame)
     CompareUiState compare;                // A/B split and Sweep panel (ab_split.cpp, sweep_panel.cpp)
     TuneUiState tune;                      // the Tune panel (tune_panel.cpp)
+    EngineUiState engine;                  // the Engine section of the Settings panel (engine_section.cpp)
 
     std::vector<SettingsIssue> issues;     // validate() of this frame's settings, before widgets
     FieldEdits fieldEdits;                 // numbers being typed, and typed numbers refused

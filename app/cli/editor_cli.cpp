@@ -3,6 +3,7 @@
 #include "app/cli/number_checks.h"
 #include "app/editor/editor_app.h"
 #include "app/preset_dir.h"
+#include "renderer/export/engine_knobs.h"
 
 #include <memory>
 
@@ -11,6 +12,7 @@ namespace st::app {
 void addEditorCommand(CLI::App& cli, int& exitCode) {
     auto opt = std::make_shared<EditorOptions>();
     auto preset = std::make_shared<std::string>();
+    auto engine = std::make_shared<std::string>();
     CLI::App* editor = cli.add_subcommand("editor", "Open the interactive editor (needs a display)");
     editor->add_option("preset", *preset, "Preset to open (default: default.json of presets/, or of the installed presets)");
     editor->add_option("--frames", opt->frames, "Quit after N frames (for scripted runs)")->check(numberIn(1, 1000000));
@@ -31,9 +33,14 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
                        "(waiting for input, drawing nothing)");
     editor->add_flag("--wait-accuracy", opt->waitAccuracy,
                      "With --frames: keep drawing until the Accuracy panel shows its figures, then print them");
+    editor->add_option("--engine", *engine,
+                       "Open in engine mode: the Settings panel shows this engine's knobs and greys what it lacks; the Tune "
+                       "panel tunes in its knobs (" + xport::knobEngineList() + ")")
+        ->check(CLI::IsMember({"threejs", "babylon", "godot"}));
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");
-    editor->callback([opt, preset, &exitCode] {
+    editor->callback([opt, preset, engine, &exitCode] {
         if (!preset->empty()) opt->preset = *preset;
+        if (!engine->empty()) opt->engine = xport::parseKnobEngine(*engine);
         opt->presetDir = defaultPresetDir(opt->preset.value_or(std::filesystem::path()));
         exitCode = runEditor(*opt);
     });

@@ -1,4 +1,6 @@
 #pragma once
+#include "renderer/export/engine_export.h"
+
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -23,6 +25,7 @@ struct EditorOptions {
     bool previewPath = false;   // View > Preview path on the first frame; with frames, run until it plays
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures
     bool debugContext = false;
+    std::optional<xport::Engine> engine;  // --engine: the Engine section's choice at start
 };
 
 // Runs the editor until the window closes; returns the exit code.

@@ -19,6 +19,7 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt)
       model_(std::make_unique<EditorModel>(ModelOptions{opt.preset, opt.presetDir, {}})),
       viewport_(std::make_unique<ViewportRenderer>(*model_)) {
     model_->ui().setLayoutPrefs(loadLayoutPrefs(window_.configDir() / "layout.json"));
+    model_->ui().setEngine(opt.engine);
 }
 
 EditorSession::~EditorSession() { saveLayoutPrefs(window_.configDir() / "layout.json", model_->ui().layoutPrefs()); }

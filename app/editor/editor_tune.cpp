@@ -80,6 +80,7 @@ std::vector<std::string> tuneArguments(const ui::TuneRequest& r, const fs::path&
     }
     if (withA) args.insert(args.end(), {"--compare-with", (dir / "A.json").string()});
     if (r.front) args.push_back("--front");
+    if (!r.engine.empty()) args.insert(args.end(), {"--engine", r.engine});
     return args;
 }
 

@@ -75,6 +75,26 @@ EngineKnobs knobsFor(Engine e, const Settings& s) {
     return e == Engine::ThreeJs ? threejsKnobsFor(s) : e == Engine::Babylon ? babylonKnobsFor(s) : godotKnobsFor(s);
 }
 
+std::vector<std::string> engineFieldPaths(Engine e) {
+    requireTable(e);
+    switch (e) {
+        case Engine::ThreeJs:  // CSM's options, the lights' shadow properties, the renderer's map type, shadowSide
+            return {"cascades.count",      "cascades.scheme",   "cascades.manualSplits", "cascades.shadowDistance",
+                    "cascades.mapSize",    "cascades.zExtensionDistance", "cascades.lightDepth", "cascades.casterFaces",
+                    "cascades.blendBand",  "filter.kind",       "filter.radius",         "bias.constant",
+                    "bias.normalOffset"};
+        case Engine::Babylon:  // CascadedShadowGenerator's properties
+            return {"cascades.count", "cascades.lambda",   "cascades.shadowDistance", "cascades.mapSize", "cascades.fit",
+                    "cascades.zExtension", "cascades.blendBand", "filter.kind", "filter.size", "bias.constant",
+                    "bias.normalOffset"};
+        default:  // Godot: DirectionalLight3D and the directional shadow project settings
+            return {"cascades.count",      "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
+                    "cascades.zExtensionDistance", "cascades.blendBand", "cascades.fadeBand", "cascades.casterFaces",
+                    "filter.kind",         "filter.vogelTaps",      "filter.radius",           "bias.constant",
+                    "bias.normalOffset"};
+    }
+}
+
 Settings engineModel(Engine e, const nlohmann::json& knobs, const Settings& view) {
     requireTable(e);
     try {

@@ -38,6 +38,11 @@ nlohmann::json defaultKnobs(Engine e);
 // The nearest knobs the engine takes for `s` (missing ones keep the defaults), and what it lacks.
 EngineKnobs knobsFor(Engine e, const Settings& s);
 
+// The shadow settings (cascades.*, filter.*, bias.*) the engine's knobs set; every other one of
+// those groups is fixed by the engine (its model sets it) or has no knob there. The editor greys
+// the rest; the tuner's space for the engine (tune/tune_engine.h) moves these only.
+std::vector<std::string> engineFieldPaths(Engine e);
+
 // What the engine does with `knobs`, as shadowtune settings: `view`'s scene, camera, light,
 // output and measure settings, with the cascades, filter and bias the engine would use. Throws
 // std::invalid_argument naming the knob when a value is of the wrong type or out of range.
