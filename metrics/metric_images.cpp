@@ -30,10 +30,10 @@ Rgb classColor(PixelClass c) {
     case PixelClass::Terminator: return {70, 40, 90};
     case PixelClass::CorrectLit: return {205, 205, 205};
     case PixelClass::CorrectShadow: return {110, 110, 110};
-    case PixelClass::FalseShadowEdge: return {255, 185, 150};
-    case PixelClass::FalseShadowGross: return {230, 20, 20};
-    case PixelClass::FalseLightEdge: return {150, 205, 255};
-    case PixelClass::FalseLightGross: return {20, 60, 255};
+    case PixelClass::FalseShadowEdge: return {250, 175, 240};
+    case PixelClass::FalseShadowGross: return {220, 20, 200};
+    case PixelClass::FalseLightEdge: return {165, 240, 240};
+    case PixelClass::FalseLightGross: return {0, 205, 215};
     }
     return {255, 0, 255};
 }
@@ -50,8 +50,8 @@ Rgb densityColor(float pixelsPerTexel) {
 // Over a lit scene errorImage's pale edge colours are about as bright as the ground: these are
 // darker, and keep the hues.
 Rgb overlayColor(PixelClass c) {
-    if (c == PixelClass::FalseShadowEdge) return {255, 120, 70};
-    if (c == PixelClass::FalseLightEdge) return {70, 150, 255};
+    if (c == PixelClass::FalseShadowEdge) return {240, 110, 225};
+    if (c == PixelClass::FalseLightEdge) return {90, 225, 230};
     return classColor(c);
 }
 

@@ -17,13 +17,13 @@ namespace st::metrics {
 // no surface slate.
 Rgba8Image truthImage(const MeasureSamples& s, const std::vector<std::uint8_t>& truth);
 
-// Errors of the unfiltered test: false shadow (acne) in reds, false light (leaks, missing
+// Errors of the unfiltered test: false shadow (acne) in magentas, false light (leaks, missing
 // casters) in blues; pale inside the edge band (expected aliasing), saturated outside it (gross).
 // Correct pixels in greys (lit light, shadow mid), facing away dark, the terminator band of
 // smooth meshes dark purple, no surface slate.
 Rgba8Image errorImage(const AccuracyReport& a, int width, int height);
 
-// The same errors for drawing over the scene: false shadow in reds, false light in blues, opaque;
+// The same errors for drawing over the scene: false shadow in magentas, false light in cyans, opaque;
 // lighter in the edge band, saturated when gross, and gross pixels ringed by a translucent halo
 // of their colour so a lone one can be found in a full-window view. Everything else is fully
 // transparent. Straight alpha.

@@ -14,9 +14,10 @@
 namespace st::ui {
 namespace {
 
-// The overlay's gross colours (metrics/metric_images.cpp); the blue lightened to read on a dark panel.
-const ImVec4 kFalseShadowColour{230 / 255.0f, 20 / 255.0f, 20 / 255.0f, 1.0f};
-const ImVec4 kFalseLightColour{60 / 255.0f, 110 / 255.0f, 255 / 255.0f, 1.0f};
+// The overlay's gross colours (metrics/metric_images.cpp): magenta and cyan, which no cascade tint
+// (red, green, blue, yellow) nor the texel-density ramp (blue .. green .. red) uses.
+const ImVec4 kFalseShadowColour{235 / 255.0f, 60 / 255.0f, 215 / 255.0f, 1.0f};
+const ImVec4 kFalseLightColour{0 / 255.0f, 205 / 255.0f, 215 / 255.0f, 1.0f};
 
 std::string percent(double share) {
     char text[32];
