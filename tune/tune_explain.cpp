@@ -1,6 +1,7 @@
 #include "tune/tune_explain.h"
 
 #include "metrics/figure_table.h"
+#include "renderer/csm/cascade_plan.h"
 #include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/field_table.h"
 #include "renderer/settings/kind_descriptors.h"
@@ -8,6 +9,7 @@
 #include "sweep/sweep_results.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -48,34 +50,98 @@ Settings withChange(Settings s, const Explained& x, bool to) {
     return s;
 }
 
-// "-0.33 pp misclassified": the error difference in the figure's display unit.
-std::string errorDelta(const metrics::FigureRow& row, double delta) {
+// An error as the figure shows it: "0.27" or "1.2 %".
+std::string errorValue(const metrics::FigureRow& row, double v) {
     const metrics::UnitInfo& u = metrics::unitInfo(row.unit);
-    char text[64];
-    std::snprintf(text, sizeof text, "%+.3g%s%s", delta * u.scale, u.deltaSymbol[0] ? " " : "", u.deltaSymbol);
-    return text;
-}
-
-std::string costDelta(double from, double to) {
     char text[48];
-    std::snprintf(text, sizeof text, "%+.0f %% cost", from > 0.0 ? (to / from - 1.0) * 100.0 : 0.0);
+    std::snprintf(text, sizeof text, "%#.3g%s%s", v * u.scale, u.symbol[0] ? " " : "", u.symbol);
     return text;
 }
 
-std::string judged(const Evaluation& e, const metrics::FigureRow& row, const Evaluation& base, bool reversed) {
-    if (!e.valid) return "not valid alone (" + e.problem + ")";
-    const double dErr = reversed ? base.error - e.error : e.error - base.error;
-    const double from = reversed ? e.costMs : base.costMs, to = reversed ? base.costMs : e.costMs;
-    std::string out = errorDelta(row, dErr) + " " + row.label + ", " + costDelta(from, to);
-    if (!e.constraintsMet) out += " (" + e.violated + ")";
+// "cuts the error by 66 %", "raises the error by 12 %", "leaves the error as it was": the change
+// in percent of the error it starts from, as an artist reads a gain.
+std::string errorChange(double from, double to) {
+    if (from <= 0.0 || std::abs(to - from) <= 0.005 * from) return "leaves the error as it was";
+    char text[64];
+    const double pct = 100.0 * (to - from) / from;
+    std::snprintf(text, sizeof text, "%s the error by %.0f %%", pct < 0.0 ? "cuts" : "raises", std::abs(pct));
+    return text;
+}
+
+std::string costChange(double from, double to) {
+    if (from <= 0.0 || std::abs(to - from) <= 0.005 * from) return "at the same cost";
+    char text[48];
+    const double pct = 100.0 * (to - from) / from;
+    std::snprintf(text, sizeof text, "at %.0f %% %s cost", std::abs(pct), pct < 0.0 ? "less" : "more");
+    return text;
+}
+
+// "acne 92.942 % > 52.366 %; flicker F ..." (tune_eval.cpp) as a sentence: "acne rises to
+// 92.942 % from the input's 52.366 %; ...".
+std::string worseSentence(const std::string& violated) {
+    std::string out, rest = violated;
+    while (!rest.empty()) {
+        const auto end = rest.find("; ");
+        std::string part = rest.substr(0, end);
+        rest = end == std::string::npos ? "" : rest.substr(end + 2);
+        const auto gt = part.find(" > ");
+        if (gt != std::string::npos) {
+            const auto name = part.rfind(' ', part.rfind(' ', gt - 1) - 1);  // "acne 92.942 %": before the value
+            part = part.substr(0, name) + " rises to" + part.substr(name, gt - name) + " from the input's " + part.substr(gt + 3);
+        }
+        out += (out.empty() ? "" : "; ") + part;
+    }
     return out;
 }
+
+// What the change does alone (from the input) or in the tuned preset (the tuned preset without
+// it, reversed: what it is worth there).
+std::string judged(const Evaluation& e, const metrics::FigureRow& row, const Evaluation& base, bool reversed) {
+    if (!e.valid) return "not valid (" + e.problem + ")";
+    const double from = reversed ? e.error : base.error, to = reversed ? base.error : e.error;
+    const double costFrom = reversed ? e.costMs : base.costMs, costTo = reversed ? base.costMs : e.costMs;
+    return errorChange(from, to) + " (" + row.label + " " + errorValue(row, from) + " -> " + errorValue(row, to) + ") " +
+           costChange(costFrom, costTo);
+}
+
+// The splits a computed scheme gives, where the field itself is empty: "25.6, 54.8, 112.7 m (computed)".
+std::string splitsText(const Settings& s, const nlohmann::json& v, std::string_view unit) {
+    if (!v.is_array() || !v.empty()) return valueText(v, unit);
+    const std::vector<float> splits = csm::planSplits(s, std::nullopt);
+    nlohmann::json inner = nlohmann::json::array();
+    for (std::size_t i = 1; i + 1 < splits.size(); ++i) inner.push_back(double(splits[i]));
+    return inner.empty() ? "none" : valueText(inner, unit) + " (computed)";
+}
+// The artifact figures an artist sees: wrong shadow, wrong light, and the soft truth's classes.
+constexpr const char* kArtifactKeys[] = {"accuracy.falseShadow", "soft.acne", "accuracy.falseLight", "soft.lightBleeding",
+                                         "soft.peterPanning", "soft.missingCaster", "flicker.flipRate"};
+
+// "False shadow rises from 0.071 % to 0.207 % of sun-facing pixels": each artifact figure the tuned
+// preset has more of than the input (by more than a tenth and 0.01 points), as a sentence.
+std::vector<std::string> worseFigures(const Evaluation& input, const Evaluation& tuned) {
+    std::vector<std::string> out;
+    for (const char* key : kArtifactKeys) {
+        const auto a = input.figures.find(key), b = tuned.figures.find(key);
+        if (a == input.figures.end() || b == tuned.figures.end() || !a->is_number() || !b->is_number()) continue;
+        const double from = a->get<double>(), to = b->get<double>();
+        if (to <= from * 1.1 || to - from <= 1e-4) continue;
+        const metrics::FigureRow* row = metrics::findFigure(key);
+        std::string label = row ? std::string(row->label) : std::string(key);
+        if (!label.empty()) label[0] = char(std::toupper(static_cast<unsigned char>(label[0])));
+        char text[160];
+        std::snprintf(text, sizeof text, "%s rises from %.3g %% to %.3g %% of sun-facing pixels.", label.c_str(), 100.0 * from,
+                      100.0 * to);
+        out.emplace_back(text);
+    }
+    return out;
+}
+
 }  // namespace
 
 Explanation explain(const Settings& input, const Evaluation& inputEval, const Settings& tuned,
                     const Evaluation& tunedEval, const std::string& objectiveChoice, const Evaluator& evaluate) {
     const metrics::FigureRow& row = sweep::errorFigure(objectiveChoice);
-    Explanation out{row.label, inputEval, tunedEval, {}};
+    Explanation out{row.label, inputEval, tunedEval, {}, worseFigures(inputEval, tunedEval)};
     const std::vector<Change> changes = changesBetween(input, tuned);
     const auto changed = [&](const std::string& path) {
         return std::find_if(changes.begin(), changes.end(), [&](const Change& c) { return c.path == path; });
@@ -108,9 +174,13 @@ Explanation explain(const Settings& input, const Evaluation& inputEval, const Se
         const Settings alone = withChange(input, x, true);
         x.alone = alone == input ? inputEval : evaluate(alone);
         x.without = without == tuned ? tunedEval : evaluate(without);
-        x.line = std::string(f->label) + " " + valueText(c.from, unitIn(*f, input)) + " -> " + valueText(c.to, unitIn(*f, tuned)) + also +
-                 ": alone " + judged(x.alone, row, inputEval, false) + "; in the tuned preset " +
-                 judged(x.without, row, tunedEval, true);
+        x.line = std::string(f->label) + " " + splitsText(input, c.from, unitIn(*f, input)) + " -> " +
+                 splitsText(tuned, c.to, unitIn(*f, tuned)) + also + ": alone it " + judged(x.alone, row, inputEval, false) +
+                 "; in the tuned preset it " + judged(x.without, row, tunedEval, true);
+        // An artifact class that gets worse with the change, said as a sentence, and the line marked.
+        if (x.alone.valid && !x.alone.constraintsMet && !x.alone.violated.empty())
+            x.worse = "Alone, " + worseSentence(x.alone.violated) + ".";
+        if (!x.worse.empty()) x.line = "(!) " + x.line + ". " + x.worse;
         out.changes.push_back(std::move(x));
     }
     return out;
@@ -126,15 +196,18 @@ Json toJson(const Explanation& e) {
         Json with = Json::object();
         for (const auto& [path, value] : x.with) with[path] = value;
         changes.push_back({{"field", x.change.path}, {"label", x.label}, {"from", x.change.from}, {"to", x.change.to},
-                           {"with", with}, {"alone", eval(x.alone)}, {"withoutIt", eval(x.without)}, {"text", x.line}});
+                           {"with", with}, {"alone", eval(x.alone)}, {"withoutIt", eval(x.without)}, {"text", x.line},
+                           {"worse", x.worse}});
     }
-    return {{"objective", e.objective}, {"input", eval(e.input)}, {"tuned", eval(e.tuned)}, {"changes", changes}};
+    return {{"objective", e.objective}, {"input", eval(e.input)}, {"tuned", eval(e.tuned)}, {"worse", e.worse}, {"changes", changes}};
 }
 
 std::string toMarkdown(const Explanation& e, const std::string& title) {
     std::string md = "# " + title + "\n\nObjective: " + e.objective + ". Each change from the input preset, measured "
-                     "alone (the input with only that change) and in the tuned preset (the tuned preset without it: "
-                     "what it buys there). Costs are modelled (the cost profile), errors averaged over the tuned views.\n\n";
+                     "alone (the input with only that change) and in the tuned preset (against the tuned preset without it: "
+                     "what it is worth there), in percent of the error it starts from. Costs are modelled (the cost "
+                     "profile), errors averaged over the tuned views. (!) marks a change that makes an artifact worse.\n\n";
+    for (const std::string& w : e.worse) md += "**Worse than the input:** " + w + "\n\n";
     for (const Explained& x : e.changes) md += "- " + x.line + "\n";
     if (e.changes.empty()) md += "- No change: the input preset is already the best found within the budget.\n";
     return md;

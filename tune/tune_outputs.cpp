@@ -111,6 +111,7 @@ void Tuner::writeOutputs(const Candidate& best, double seconds) {
     if (writes()) {
         writeTextAtomic(dir / "explain.json", toJson(why).dump(2) + "\n");
         writeTextAtomic(dir / "explain.md", toMarkdown(why, "Why " + opt_.preset.stem().string() + " was tuned this way"));
+        for (const std::string& w : why.worse) say("  worse than the input: " + w);
         for (const Explained& x : why.changes) say("  " + x.line);
     }
     writeSummary(best, inputEval, seconds);

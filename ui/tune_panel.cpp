@@ -169,6 +169,12 @@ void explanation(UiFrame& f, const TuneView& v) {
     ImGui::TextWrapped("%s", v.result.c_str());
     recordItem(f.state.rects, "tune.result");
     if (!v.heldOut.empty()) ImGui::TextWrapped("%s", v.heldOut.c_str());
+    for (const std::string& w : v.worse) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::TextWrapped("Worse than the current settings: %s", w.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (!v.worse.empty()) recordItem(f.state.rects, "tune.worse");
     if (v.changes.empty()) {
         ImGui::TextDisabled("Nothing within the budget beat the current settings.");
         return;
@@ -184,7 +190,10 @@ void explanation(UiFrame& f, const TuneView& v) {
         if (ImGui::SmallButton("Apply")) applyChanges(f, {&v.changes[i]}, v.changes[i].path + " alone");
         recordItem(f.state.rects, "tune.change." + std::to_string(i));
         ImGui::SameLine();
+        const bool worse = v.changes[i].line.rfind("(!) ", 0) == 0;  // tune_explain.cpp marks a worse artifact
+        if (worse) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
         ImGui::TextWrapped("%s", v.changes[i].line.c_str());
+        if (worse) ImGui::PopStyleColor();
         ImGui::PopID();
     }
 }

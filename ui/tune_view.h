@@ -49,6 +49,7 @@ struct TuneView {
     std::vector<TuneChange> changes;  // Done: the explanation, one line per changed field
     std::string result;      // Done: "tuned 0.52 % misclassified at 74.1 ms (current 0.84 % at 75.3 ms)"
     std::string heldOut;     // Done: how it does on the held-out view
+    std::vector<std::string> worse;  // Done: artifact figures the tuned settings have more of, as sentences
     std::optional<Settings> measuredFrom;  // the live settings the run started from
 };
 

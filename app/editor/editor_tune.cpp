@@ -232,6 +232,9 @@ void EditorTune::finish(int status) {
         view_.state = ui::TuneView::State::Done;
         std::tie(view_.result, view_.heldOut) = readSummary(*summary);
         view_.changes = readExplanation(*explain);
+        view_.worse.clear();
+        if (explain->contains("worse") && (*explain)["worse"].is_array())
+            for (const Json& w : (*explain)["worse"]) view_.worse.push_back(w.get<std::string>());
     } else if (cancelling) {
         view_.state = ui::TuneView::State::Cancelled;
     } else {

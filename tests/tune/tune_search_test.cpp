@@ -386,6 +386,43 @@ TEST(TuneSearchTest, TheExplanationMeasuresManualSplitsWithTheirSchemeAndCount) 
     EXPECT_EQ(toJson(x)["changes"][std::size_t(splits - x.changes.data())]["with"]["cascades.scheme"], "manual");
 }
 
+// Issue 39 #5: an artist's explanation. The change in percent of the error it starts from and of
+// the cost, the computed splits named instead of "[]", an artifact the change alone makes worse
+// said as a sentence with the line marked, and what the tuned preset has more of than the input.
+TEST(TuneSearchTest, TheExplanationSpeaksInPercentAndSaysWhatGetsWorse) {
+    Settings input;
+    input.cascades.count = 4;
+    Settings tuned = input;
+    tuned.cascades.scheme = SplitScheme::Manual;
+    tuned.cascades.manualSplits = {20.0f, 50.0f, 120.0f};
+    tuned.bias.slope = 0.5f;
+    const Evaluator evaluate = [&](const Settings& s) {
+        Evaluation e;
+        const bool manual = s.cascades.scheme == SplitScheme::Manual;
+        e.error = (manual ? 0.2 : 0.4) * (s.bias.slope < 1.0f ? 0.5 : 1.0);
+        e.costMs = manual ? 9.0 : 10.0;
+        e.figures = {{"accuracy.falseShadow", s.bias.slope < 1.0f ? 0.004 : 0.001}};
+        if (s.bias.slope < 1.0f && !manual) {
+            e.constraintsMet = false;
+            e.violated = "acne 0.400 % > 0.100 %";
+        }
+        return e;
+    };
+    const Explanation x = explain(input, evaluate(input), tuned, evaluate(tuned), "soft-filtered", evaluate);
+    ASSERT_EQ(x.changes.size(), 2u);
+    const Explained& splits = x.changes[0].change.path == "cascades.manualSplits" ? x.changes[0] : x.changes[1];
+    const Explained& slope = &splits == &x.changes[0] ? x.changes[1] : x.changes[0];
+    EXPECT_NE(splits.line.find("(computed) -> 20, 50, 120 m"), std::string::npos) << splits.line;
+    EXPECT_NE(splits.line.find("alone it cuts the error by 50 %"), std::string::npos) << splits.line;
+    EXPECT_NE(splits.line.find("at 10 % less cost"), std::string::npos) << splits.line;
+    EXPECT_EQ(splits.line.rfind("(!) ", 0), std::string::npos) << "nothing got worse with the splits";
+    EXPECT_EQ(slope.line.rfind("(!) ", 0), 0u) << slope.line;
+    EXPECT_NE(slope.line.find("Alone, acne rises to 0.400 % from the input's 0.100 %."), std::string::npos) << slope.line;
+    ASSERT_EQ(x.worse.size(), 1u);
+    EXPECT_EQ(x.worse[0], "False shadow rises from 0.1 % to 0.4 % of sun-facing pixels.");
+    EXPECT_NE(toMarkdown(x, "t").find("**Worse than the input:** False shadow"), std::string::npos);
+}
+
 // A resumed tune asked for more evaluations keeps its first run's screening limit: its walk is
 // the shorter one continued (the same points in the same order, then more), so it never ends
 // worse. With the limit scaled to the new count the walk screens longer and goes elsewhere.
