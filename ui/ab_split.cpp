@@ -82,11 +82,14 @@ std::string costText(const FrameStats* s) {
     if (!s) return "model - ms, - MiB";
     // The modelled cost first: it is the same every frame; the timers beside it are not.
     char text[128];
+    // The model prices the frame at the size it was drawn (the Tune panel's budget is priced at the
+    // tune's size): the size goes with the figure. The timers are every pass of the last frame drawn.
+    const double timed = s->gpuShadowMs + s->gpuFilterMs + s->gpuDepthBoundsMs + s->gpuMainMs;
     if (s->modelMs >= 0.0)
-        std::snprintf(text, sizeof text, "model %.1f ms, %.1f MiB (timers %.1f+%.1f ms)", s->modelMs,
-                      double(s->shadowMapBytes) / (1024.0 * 1024.0), s->gpuShadowMs, s->gpuMainMs);
+        std::snprintf(text, sizeof text, "modelled %.1f ms at %dx%d, %.1f MiB; timed %.1f ms", s->modelMs, s->width, s->height,
+                      double(s->shadowMapBytes) / (1024.0 * 1024.0), timed);
     else
-        std::snprintf(text, sizeof text, "GPU %.1f+%.1f ms %.1f MiB", s->gpuShadowMs, s->gpuMainMs,
+        std::snprintf(text, sizeof text, "timed %.1f ms (shadow %.1f, main %.1f), %.1f MiB", timed, s->gpuShadowMs, s->gpuMainMs,
                       double(s->shadowMapBytes) / (1024.0 * 1024.0));
     return text;
 }

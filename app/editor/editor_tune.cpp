@@ -94,7 +94,9 @@ void readTuneProgress(const Json& progress, ui::TuneView& v) {
                               : "nothing within the budget yet";
     const double ms = number(progress, "budgetMs"), bytes = number(progress, "budgetBytes");
     v.budget = "budget:";
+    // Priced at the tune's size, where the A/B labels price the frame at the viewport's: the size says which.
     if (std::isfinite(ms)) v.budget += " " + fixed(ms, 1) + " ms modelled";
+    if (std::isfinite(ms) && v.chart.width > 0) v.budget += " at " + std::to_string(v.chart.width) + "x" + std::to_string(v.chart.height);
     if (std::isfinite(bytes)) v.budget += std::string(std::isfinite(ms) ? " and" : "") + " " + fixed(bytes / kMiB, 1) + " MiB of maps";
     v.chart.errorTitle = error.axisTitle;
     v.chart.costTitle = "modelled cost (ms)";

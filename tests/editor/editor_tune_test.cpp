@@ -53,11 +53,12 @@ TEST(EditorTuneReadTest, ProgressBecomesCountsBestAndAChartOfTheFeasibleFront) {
                  {"error": 0.004, "costMs": 3.0, "mapBytes": 2097152, "feasible": true},
                  {"error": 0.001, "costMs": 8.0, "mapBytes": 4194304, "feasible": false}]})");
     ui::TuneView v;
+    v.chart.width = 320, v.chart.height = 180;  // the tune's size (EditorTune::start)
     readTuneProgress(progress, v);
     EXPECT_EQ(v.done, 3);
     EXPECT_EQ(v.total, 10);
     EXPECT_EQ(v.best, "best 0.4 % at 3.0 ms");
-    EXPECT_EQ(v.budget, "budget: 4.0 ms modelled and 4.0 MiB of maps");
+    EXPECT_EQ(v.budget, "budget: 4.0 ms modelled at 320x180 and 4.0 MiB of maps") << "the size the cost is priced at";
     ASSERT_EQ(v.chart.points.size(), 5u);  // three evaluations, current and A
     EXPECT_DOUBLE_EQ(v.chart.points[1].error, 0.4) << "percent, as the figure table shows misclassified";
     EXPECT_DOUBLE_EQ(v.chart.points[1].memory, 2.0);
