@@ -147,7 +147,8 @@
     M(int, tileBorder)     /* depth view: bool, outline the tile (the atlas image) */             \
     M(int, overlayPad0)                                                                           \
     M(int, overlayPad1)                                                                           \
-    M(int, overlayPad2)
+    M(int, overlayPad2)                                                                           \
+    M(vec4, depthPlane)    /* depth view: x u + y v + z, the tile's mean depth plane (uv 0..1) */
 
 // The depth-bounds reduction (depth_bounds_comp.glsl): how a depth texel becomes a sample.
 #define ST_REDUCE_BLOCK(M, A)                                                                     \

@@ -4,6 +4,10 @@
 #include "renderer/render/shader_library.h"
 #include "shaders/interface.h"
 
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 
 namespace st {
@@ -19,13 +23,14 @@ ShadowMapView::ShadowMapView() {
     glSamplerParameteri(raw_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
 }
 
-void ShadowMapView::drawCascade(const ShadowMaps& maps, int i, float lo, float hi, bool border) {
+void ShadowMapView::drawCascade(const ShadowMaps& maps, int i, const Ramp& ramp, bool border) {
     const csm::MapTile& t = maps.tile(i);
     const csm::MapTexture& tex = maps.layout().textures[static_cast<std::size_t>(t.texture)];
     gpu_if::OverlayBlock tile;
     tile.layer = t.layer;
-    tile.depthLo = lo;
-    tile.depthHi = hi;
+    tile.depthLo = ramp.lo;
+    tile.depthHi = ramp.hi;
+    tile.depthPlane = ramp.plane;
     tile.uvRect = csm::tileBounds(t, tex);
     tile.tileBorder = border ? 1 : 0;
     overlay_.upload(tile);
@@ -65,13 +70,13 @@ void ShadowMapView::update(const ShadowMaps& maps, int tileSize, const MomentMap
     state.framebuffer = fbo_.id();
     state.viewport = {0, 0, tileSize, tileSize};
     gpu::applyPassState(state);
-    ranges_.assign(std::size_t(maps.cascades()), {0.0f, 1.0f});
+    ranges_.assign(std::size_t(maps.cascades()), Ramp{});
     for (int i = 0; i < maps.cascades(); ++i) {
         // The scene's bounds span far more depth than a cascade's casters (a 2 km terrain under
         // a 30 m cascade): the ramp spans what this tile shows instead.
         ranges_[std::size_t(i)] = writtenRange(maps, i);
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tiles_[static_cast<std::size_t>(i)].id(), 0);
-        drawCascade(maps, i, ranges_[std::size_t(i)].first, ranges_[std::size_t(i)].second, false);
+        drawCascade(maps, i, ranges_[std::size_t(i)], false);
     }
     if (showMoments) drawMoments(*moments);
     const bool atlas = maps.layout().storage == CascadeStorage::Atlas;
@@ -96,7 +101,7 @@ void ShadowMapView::update(const ShadowMaps& maps, int tileSize, const MomentMap
             const int x1 = int(b.z * float(w) + 0.5f), y1 = int(b.w * float(h) + 0.5f);
             state.viewport = {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
             gpu::applyPassState(state);
-            drawCascade(maps, i, ranges_[std::size_t(i)].first, ranges_[std::size_t(i)].second, true);
+            drawCascade(maps, i, ranges_[std::size_t(i)], true);
         }
     }
     glBindSampler(ST_BINDING_DEPTH_VIEW, 0);
@@ -110,8 +115,8 @@ void ShadowMapView::drawMoments(const MomentMaps& moments) {
     for (std::size_t i = 0; i < tiles_.size(); ++i) {
         gpu_if::OverlayBlock tile;
         tile.layer = static_cast<int>(i);
-        tile.depthLo = ranges_[i].first;
-        tile.depthHi = ranges_[i].second;
+        tile.depthLo = ranges_[i].rawLo;  // moment_view.frag: the mean on the stored depths' ramp
+        tile.depthHi = ranges_[i].rawHi;
         tile.uvRect = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
         for (int image = 0; image < 2; ++image) {
             tile.brightness = float(image);  // moment_view.frag: 0 the mean as depth, 1 the spread
@@ -125,19 +130,49 @@ void ShadowMapView::drawMoments(const MomentMaps& moments) {
     glUseProgram(program_.id());
 }
 
-// The tile's samples drawn raw into rawTile_ and read back: the tile shows exactly these texels,
-// so their range is the content the ramp should span.
-std::pair<float, float> ShadowMapView::writtenRange(const ShadowMaps& maps, int cascade) {
+// The tile's samples drawn raw into rawTile_ and read back: the tile shows exactly these texels.
+// Their mean plane (least squares over the written texels, in the tile's uv) is taken out, and the
+// ramp spans the 1st to 99th percentile of what is left, not its extremes: a 2 km terrain sloping
+// across the light's view otherwise fills the grey range with one gradient and leaves the casters
+// on it nearly flat (issue 39 #9).
+ShadowMapView::Ramp ShadowMapView::writtenRange(const ShadowMaps& maps, int cascade) {
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, rawTile_.id(), 0);
-    drawCascade(maps, cascade, 0.0f, -1.0f, false);
-    std::vector<float> depth(std::size_t(tileSize_) * std::size_t(tileSize_));
+    drawCascade(maps, cascade, Ramp{0.0f, -1.0f, glm::vec4(0.0f), 0.0f, -1.0f}, false);
+    const std::size_t n = std::size_t(tileSize_);
+    std::vector<float> depth(n * n);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(rawTile_.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
-    float lo = 1.0f, hi = 0.0f;
+    glm::dmat3 ata(0.0);
+    glm::dvec3 atb(0.0);
+    std::size_t written = 0;
+    for (std::size_t y = 0; y < n; ++y)
+        for (std::size_t x = 0; x < n; ++x) {
+            const float d = depth[y * n + x];
+            if (d >= 1.0f) continue;
+            const glm::dvec3 row((double(x) + 0.5) / double(n), (double(y) + 0.5) / double(n), 1.0);
+            ata += glm::outerProduct(row, row);
+            atb += row * double(d);
+            ++written;
+        }
+    if (written == 0) return {};
+    glm::vec4 plane(0.0f);
+    if (written >= 3 && std::abs(glm::determinant(ata)) > 1e-12) plane = glm::vec4(glm::vec3(glm::inverse(ata) * atb), 0.0f);
+    float rawLo = 1.0f, rawHi = 0.0f;
     for (const float d : depth)
-        if (d < 1.0f) lo = std::min(lo, d), hi = std::max(hi, d);
-    if (lo > hi) return {0.0f, 1.0f};
-    return {lo, std::max(hi, lo + 1e-6f)};
+        if (d < 1.0f) rawLo = std::min(rawLo, d), rawHi = std::max(rawHi, d);
+    std::vector<float> above;
+    above.reserve(written);
+    for (std::size_t y = 0; y < n; ++y)
+        for (std::size_t x = 0; x < n; ++x)
+            if (const float d = depth[y * n + x]; d < 1.0f)
+                above.push_back(d - (plane.x * (float(x) + 0.5f) / float(n) + plane.y * (float(y) + 0.5f) / float(n) + plane.z));
+    const auto at = [&](double share) {
+        const auto k = std::size_t(share * double(above.size() - 1));
+        std::nth_element(above.begin(), above.begin() + std::ptrdiff_t(k), above.end());
+        return above[k];
+    };
+    const float lo = at(0.01), hi = at(0.99);
+    return {lo, std::max(hi, lo + 1e-6f), plane, rawLo, std::max(rawHi, rawLo + 1e-6f)};
 }
 
 }  // namespace st

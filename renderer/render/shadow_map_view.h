@@ -9,6 +9,8 @@
 
 #include "shaders/interface.h"
 
+#include <glm/vec4.hpp>
+
 #include <utility>
 #include <vector>
 
@@ -31,14 +33,22 @@ public:
     int layers() const { return static_cast<int>(tiles_.size()); }
     // Stored depth (0 = the sun's side of the light box) of the nearest and farthest written
     // sample of the cascade's tile; {0, 1} where nothing was written.
-    std::pair<float, float> depthRange(int layer) const { return ranges_[std::size_t(layer)]; }
+    // The stored depths the tile's written texels span (the moment tiles' ramp).
+    std::pair<float, float> depthRange(int layer) const { return {ranges_[std::size_t(layer)].rawLo, ranges_[std::size_t(layer)].rawHi}; }
     GLuint atlasTexture() const { return atlas_.id(); }  // 0 unless the storage is an atlas
     int atlasWidth() const { return atlasWidth_; }
     int atlasHeight() const { return atlasHeight_; }
 
 private:
     // Cascade i's tile into the bound framebuffer, its depth [lo, hi] as the grey ramp (hi < 0: raw).
-    void drawCascade(const ShadowMaps& maps, int i, float lo, float hi, bool border);
+    // A depth tile's grey ramp: depth above `plane` (x u + y v + z over the tile's uv) from lo
+    // (bright) to hi (dark); rawLo..rawHi the stored depths themselves span.
+    struct Ramp {
+        float lo = 0.0f, hi = 1.0f;
+        glm::vec4 plane{0.0f};
+        float rawLo = 0.0f, rawHi = 1.0f;
+    };
+    void drawCascade(const ShadowMaps& maps, int i, const Ramp& ramp, bool border);
     void drawMoments(const MomentMaps& moments);
     gpu::Program program_;
     gpu::Program momentProgram_;
@@ -55,10 +65,10 @@ private:
     // this frame's update() may still name them.
     std::vector<gpu::Texture> retired_;
     gpu::Texture rawTile_;  // R32F, tileSize²: the raw depths of one layer's samples
-    std::vector<std::pair<float, float>> ranges_;
+    std::vector<Ramp> ranges_;
     int tileSize_ = 0;
 
-    std::pair<float, float> writtenRange(const ShadowMaps& maps, int cascade);
+    Ramp writtenRange(const ShadowMaps& maps, int cascade);
 };
 
 }  // namespace st
