@@ -87,7 +87,9 @@ std::string worseSentence(const std::string& violated) {
         const auto gt = part.find(" > ");
         if (gt != std::string::npos) {
             const auto name = part.rfind(' ', part.rfind(' ', gt - 1) - 1);  // "acne 92.942 %": before the value
-            part = part.substr(0, name) + " rises to" + part.substr(name, gt - name) + " from the input's " + part.substr(gt + 3);
+            const std::string now = part.substr(name + 1, gt - name - 1), was = part.substr(gt + 3);
+            if (now == was) continue;  // a rise below the figure's shown precision says nothing
+            part = part.substr(0, name) + " rises to " + now + " from the input's " + was;
         }
         out += (out.empty() ? "" : "; ") + part;
     }
@@ -179,7 +181,7 @@ Explanation explain(const Settings& input, const Evaluation& inputEval, const Se
                  "; in the tuned preset it " + judged(x.without, row, tunedEval, true);
         // An artifact class that gets worse with the change, said as a sentence, and the line marked.
         if (x.alone.valid && !x.alone.constraintsMet && !x.alone.violated.empty())
-            x.worse = "Alone, " + worseSentence(x.alone.violated) + ".";
+            if (const std::string w = worseSentence(x.alone.violated); !w.empty()) x.worse = "Alone, " + w + ".";
         if (!x.worse.empty()) x.line = "(!) " + x.line + ". " + x.worse;
         out.changes.push_back(std::move(x));
     }

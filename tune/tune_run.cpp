@@ -188,10 +188,15 @@ void Tuner::simplify(std::size_t best) {
     Candidate c = result_.evaluated[best];
     // Points already stood on: two linked fields (manual splits and their scheme) can undo each
     // other in turn for ever when neither buys anything (seen with tune --engine threejs).
+    // A step must leave fewer changes from the input, so the walk ends: an engine's projection can
+    // bring a field put back to a value a float's last digit away from the input's (Godot's bias
+    // per split follows the splits), which is no simplification (seen looping on the yard).
     std::vector<Settings> visited{c.settings};
     for (bool undone = true; undone;) {
         undone = false;
+        const std::size_t changes = changesBetween(input_, c.settings).size();
         for (const Change& ch : changesBetween(input_, c.settings)) {
+            if (opt_.stopRequested && opt_.stopRequested()) break;
             Settings without;
             try {
                 without = withFieldJson(c.settings, ch.path, ch.from);
@@ -206,6 +211,7 @@ void Tuner::simplify(std::size_t best) {
                 }
             }
             if (without == c.settings || !validate(without).empty()) continue;
+            if (changesBetween(input_, without).size() >= changes) continue;
             if (std::find(visited.begin(), visited.end(), without) != visited.end()) continue;
             visited.push_back(without);
             const Evaluation e = judge(measured(without, "tuned"), objective_);

@@ -28,15 +28,18 @@ json readJsonFile(const fs::path& file) {
     return j;
 }
 
-// The mean of the checks' figures.json over a group of views: the engine's figures under the
-// figure-table keys, the pixel and factor agreements, and the model's figures beside.
+// The checks' figures.json over a group of views, weighted by each view's scored pixels (a view
+// whose camera sees no sun-facing receiver scores none and counts for nothing): the engine's
+// figures under the figure-table keys, the pixel and factor agreements, the model's beside.
 json meanFigures(const std::vector<json>& checks) {
-    json out = {{"views", checks.size()}};
-    if (checks.empty()) return out;
+    double pixels = 0.0;
+    for (const json& c : checks) pixels += c.value("scoredPixels", 0.0);
+    json out = {{"views", checks.size()}, {"scoredPixels", pixels}};
+    if (pixels <= 0.0) return out;
     const auto mean = [&](auto get) {
         double sum = 0.0;
-        for (const json& c : checks) sum += get(c);
-        return sum / double(checks.size());
+        for (const json& c : checks) sum += c.value("scoredPixels", 0.0) * get(c);
+        return sum / pixels;
     };
     for (const char* key : kProofKeys) {
         out[key] = mean([&](const json& c) { return c.at("engine").at("figures").at(key).get<double>(); });
@@ -60,7 +63,7 @@ std::string num(double v) {
 }
 
 std::string tableRow(const std::string& settings, const std::string& views, const json& g) {
-    if (g.value("views", 0) == 0) return "";
+    if (g.value("views", 0) == 0 || !g.contains("agreement")) return "";
     return "| " + settings + " | " + views + " (" + std::to_string(g.at("views").get<int>()) + ") | " +
            pct(g.at("accuracy.misclassified")) + " / " + pct(g.at("model").at("accuracy.misclassified")) + " | " +
            num(g.at("soft.filteredError")) + " / " + num(g.at("model").at("soft.filteredError")) + " | " +
@@ -91,7 +94,7 @@ std::string summaryLine(const json& e) {
                        pct(t.at("accuracy.misclassified")) + " tuned on the tuned views";
     const json& dh = e.at("defaults").at("heldOut");
     const json& th = e.at("tuned").at("heldOut");
-    if (dh.value("views", 0) > 0)
+    if (dh.contains("agreement") && th.contains("agreement"))
         line += " (held out: " + pct(dh.at("accuracy.misclassified")) + " -> " + pct(th.at("accuracy.misclassified")) + ")";
     line += "; shadowtune's model agrees on " + pct(t.at("agreement")) + " of the pixels";
     return line;
