@@ -69,6 +69,8 @@ struct UiInputs {
                                              // (black none .. yellow wide); empty otherwise
     ImTextureID sideView = nullptr;          // picture-in-picture image (the side camera, or the main
                                              // view when swapped); nullptr hides the window
+    bool sideViewSwapped = false;            // Tab: the side camera fills the scene viewport, the main
+                                             // view is the small picture
     std::vector<std::filesystem::path> presetFiles;  // offered in the Presets list, in this order
     std::string statusLine;                  // one line from the app (scene load error, fps, ...)
     AccuracyView accuracy;                   // the background ground truth's state and figures

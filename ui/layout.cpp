@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <string_view>
 #include <string>
 
 namespace st::ui {
@@ -133,7 +134,10 @@ bool beginDockedPanel(UiFrame& f, Panel panel, const char* name, bool* open, ImG
                                                       ImGuiWindowFlags_NoSavedSettings);
     takeBackSize(f, panel, placed);
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    f.state.rects[std::string("window.") + name] = {pos, {pos.x + size.x, pos.y + size.y}};
+    // Reported by its ID ("Title###ID": the ID, a title that changes with what it shows does not move the key).
+    const std::string_view full(name);
+    const std::string_view id = full.find("###") == std::string_view::npos ? full : full.substr(full.find("###") + 3);
+    f.state.rects["window." + std::string(id)] = {pos, {pos.x + size.x, pos.y + size.y}};
     return visible;
 }
 

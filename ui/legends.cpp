@@ -151,8 +151,10 @@ void drawSceneLegends(UiFrame& f) {
     if (scene.width() < 120.0f || scene.height() < 80.0f) return;
     ImDrawList* list = ImGui::GetBackgroundDrawList();
     const int count = f.in.stats ? static_cast<int>(f.in.stats->cascades.size()) : f.s.cascades.count;
-    if (f.s.output.view == View::Cascades)
+    // Swapped (Tab), the scene viewport shows the side camera's wireframes: their key goes with them.
+    if (f.s.output.view == View::Cascades || f.in.sideViewSwapped)
         f.state.rects["legend.cascades"] = asItem(drawCascadeLegend(list, scene, count));
+    if (f.in.sideViewSwapped) return;  // the view's own legends belong to the small picture now
     if (f.s.output.view == View::TexelGrid)
         f.state.rects["legend.texelGrid"] = asItem(drawLabelledCascadeLegend(
             list, scene, blockSizes(f, count), "square = " + std::to_string(f.s.output.texelBlock) + " texels:"));

@@ -88,7 +88,8 @@ void drawImage(UiFrame& f) {
                                          ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));
     f.req.sideViewSize = size;
     // Which wireframe is which cascade; the camera frustum is white, a colour no cascade uses.
-    if (f.in.stats) drawCascadeLegend(ImGui::GetWindowDrawList(), {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()},
+    // Swapped, this picture is the main view: its wireframe key is on the big viewport.
+    if (f.in.stats && !f.in.sideViewSwapped) drawCascadeLegend(ImGui::GetWindowDrawList(), {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()},
                                       static_cast<int>(f.in.stats->cascades.size()));
     reportInput(f);
     drawHandles(handles);
@@ -99,7 +100,9 @@ void drawImage(UiFrame& f) {
 void drawSideView(UiFrame& f) {
     if (!f.state.showSideView || !f.in.sideView) return;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2.0f, 2.0f));
-    if (beginDockedPanel(f, Panel::SideView, "Side view", &f.state.showSideView)) drawImage(f);
+    // The title names what the picture shows; the ID stays, so the window keeps its place.
+    const char* title = f.in.sideViewSwapped ? "Main view (Tab: swap back)###Side view" : "Side view###Side view";
+    if (beginDockedPanel(f, Panel::SideView, title, &f.state.showSideView)) drawImage(f);
     ImGui::End();
     ImGui::PopStyleVar();
 }

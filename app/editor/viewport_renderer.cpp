@@ -286,6 +286,7 @@ void ViewportRenderer::fillUiInputs(ui::UiInputs& in, const EditorModel& model) 
         in.shadowAtlasHeight = renderer_->shadowMaps().layout().textures.front().height;
     }
     in.sideView = pip_.colorTexture() ? tex(pip_.colorTexture()) : tex(0);
+    in.sideViewSwapped = model.swapped();
     in.accuracy = accuracy_->view();
     in.probe = probeView_;
     // The split planes as the side view picture shows them (not when it shows the main camera).

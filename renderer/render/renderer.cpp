@@ -358,7 +358,9 @@ void Renderer::buildScreenShadow(const Settings& s, const glm::mat4& viewProj, i
 void Renderer::sidePass(const Settings& s, const OrbitCamera& orbit, const OffscreenTarget& target) {
     csm::CameraParams cam = sideCamera(plan_, orbit, float(target.width()) / float(target.height()));
     glm::mat4 viewProj = csm::projectionMatrix(cam) * csm::viewMatrix(cam);
+    sideBackground_ = true;
     mainPass(s, viewProj, target);
+    sideBackground_ = false;
     lines_.draw(cascadeWireframes(plan_), viewProj, target.framebuffer(), target.width(), target.height());
     if (s.output.sideTexels) {
         const gpu_if::CascadeBlock block = cascadeBlock(s, plan_);  // the fits the maps were drawn with
@@ -383,7 +385,8 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
         state.depthWrite = false;
     }
     gpu::applyPassState(state);
-    glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
+    if (sideBackground_) glClearColor(0.16f, 0.17f, 0.2f, 1.0f);
+    else glClearColor(0.62f, 0.72f, 0.85f, 1.0f);
     glClear(prepassed ? GL_COLOR_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // Only the main camera's frame may go unshaded: the side view is an image to look at.
     const bool shade = options_.shadeMain || &target != &target_ || s.output.view == View::Side;

@@ -165,6 +165,9 @@ private:
         int draws = 0, ranges = 0;
     };
     std::optional<KeptMain> keptMain_;
+    // sidePass under way: mainPass clears to a dark slate, not the sky, so every cascade's
+    // wireframe tint (cascade 2's blue vanished against the sky) and the white frustum read.
+    bool sideBackground_ = false;
     // RenderOptions::shadeMain off: the depth prepass, kept like the main pass while its camera
     // and size stay and no pass writes the target's depth (a main pass without the prepass, a
     // side view). A tune's candidates of one view differ in shadow settings only, and the
