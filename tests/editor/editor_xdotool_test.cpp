@@ -33,7 +33,7 @@ int driveEditor(const fs::path& dir, const std::string& preset, const std::strin
                                        "sleep 1  # the first frames: the scene loaded, the panels placed\n"
                                     << actions
                                     << "\nkill -INT $pid\n"
-                                       "for i in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done\n"
+                                       "for i in $(seq 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done  # 30 s: an asan build under load\n"
                                        "kill -0 $pid 2>/dev/null && { kill -KILL $pid; exit 102; }\n"
                                        "wait $pid\n";
     const std::string cmd = "XDG_CONFIG_HOME='" + (dir / "config").string() +
