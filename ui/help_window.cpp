@@ -50,11 +50,14 @@ void drawTable() {
 void drawHelpWindow(UiFrame& f) {
     if (!f.state.showHelp) return;
     placeNextWindow(Panel::Help);
-    if (ImGui::Begin("Help", &f.state.showHelp)) {
+    // Sized to its text: a fixed size cut the longest line ("orbit around the point under the c").
+    if (ImGui::Begin("Help", &f.state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
         drawTable();
         ImGui::Spacing();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 34.0f);
         ImGui::TextWrapped("Hover (?) next to a setting for what it does, its range and what a change costs. "
                            "Camera keys work when no panel has the mouse or keyboard.");
+        ImGui::PopTextWrapPos();
         recordItem(f.state.rects, "help");
     }
     ImGui::End();

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <string_view>
 #include <string>
 
@@ -91,8 +92,8 @@ Layout computeLayout(ImVec2 origin, ImVec2 size, const LayoutMetrics& m, const L
         l.scene = rect(x0, top, x1, bottom);
         return l;
     }
-    float left = clampTo(prefs.leftWidth, kMinLeft, size.x * kMaxLeftShare);
-    float right = clampTo(prefs.rightWidth, kMinRight, size.x * kMaxRightShare);
+    float left = clampTo(prefs.leftWidth, kMinLeft * m.scale, size.x * kMaxLeftShare);
+    float right = clampTo(prefs.rightWidth, kMinRight * m.scale, size.x * kMaxRightShare);
     // A window below the supported 1000 px: the columns shrink together so the scene keeps a
     // third of the width rather than vanishing under them.
     if (const float room = size.x * (1.0f - kMinSceneShare); left + right > room) {
@@ -105,7 +106,7 @@ Layout computeLayout(ImVec2 origin, ImVec2 size, const LayoutMetrics& m, const L
     stackRight(l, cx1, x1, top, bottom, shown);
     float sceneBottom = bottom;
     if (shown.accuracy) {
-        const float h = clampTo(prefs.bottomHeight, kMinBottom, (bottom - top) * kMaxBottomShare);
+        const float h = clampTo(prefs.bottomHeight, kMinBottom * m.scale, (bottom - top) * kMaxBottomShare);
         l.accuracy = rect(cx0, bottom - h, cx1, bottom);
         sceneBottom -= h;
     }
@@ -114,8 +115,26 @@ Layout computeLayout(ImVec2 origin, ImVec2 size, const LayoutMetrics& m, const L
     return l;
 }
 
+float uiScaleFor(int height, const char* override) {
+    if (override && *override) {
+        char* end = nullptr;
+        const float v = std::strtof(override, &end);
+        if (end != override && *end == '\0' && v >= 1.0f && v <= 3.0f) return v;
+    }
+    return height > 2000 ? 2.0f : height > 1440 ? 1.5f : 1.0f;
+}
+
+LayoutPrefs scaledDefaults(float scale) {
+    LayoutPrefs p;
+    p.leftWidth *= scale;
+    p.rightWidth *= scale;
+    p.bottomHeight *= scale;
+    return p;
+}
+
 LayoutMetrics currentLayoutMetrics() {
     LayoutMetrics m;
+    m.scale = ImGui::GetFontSize() / 13.0f;  // ImGui's default font: 13 px
     const ImGuiStyle& style = ImGui::GetStyle();
     m.menuBar = ImGui::GetFrameHeight();
     // ImGui grows any window to WindowMinSize: a shorter bar would overlap the panels above.

@@ -53,7 +53,15 @@ struct LayoutMetrics {
     float menuBar = 19.0f;   // height of the main menu bar
     float statusBar = 23.0f;
     float splitBar = 52.0f;
+    float scale = 1.0f;      // the UI scale (font size / 13 px): minimum column sizes grow with it
 };
+
+// The UI scale for a window `height` pixels tall: 1 up to 1440, 1.5 up to 2000, then 2 (4K), so
+// text stays as large on the screen as at 1080p; SHADOWTUNE_UI_SCALE (1 .. 3) overrides it.
+float uiScaleFor(int height, const char* override);
+
+// The default column sizes at `scale` (the saved ones are the user's, in pixels, and stay).
+LayoutPrefs scaledDefaults(float scale);
 
 // Pure: the rectangles for a display at `origin` of `size`. Panels that are hidden or closed get
 // empty rectangles; the scene never overlaps a non-empty one.

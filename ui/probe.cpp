@@ -61,7 +61,8 @@ void drawProbe(UiFrame& f) {
     // Flying the camera, over a panel, or while a popup or modal is open (the Sweep panel's field
     // list, the Unsaved-changes question): the tooltip would be drawn over them (issue 21 #3).
     // WantCaptureMouse covers a hovered window and an open popup, as of this frame's start.
-    if (!scene.contains(mouse) || ImGui::GetIO().WantCaptureMouse || ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow) ||
+    // The help (F1) is read over the scene: no probe tooltip over it.
+    if (!scene.contains(mouse) || f.state.showHelp || ImGui::GetIO().WantCaptureMouse || ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow) ||
         ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) || ImGui::IsAnyItemActive() ||
         ImGui::IsAnyMouseDown())
         return;

@@ -18,7 +18,8 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt)
       opt_(opt),
       model_(std::make_unique<EditorModel>(ModelOptions{opt.preset, opt.presetDir, {}})),
       viewport_(std::make_unique<ViewportRenderer>(*model_)) {
-    model_->ui().setLayoutPrefs(loadLayoutPrefs(window_.configDir() / "layout.json"));
+    const fs::path layout = window_.configDir() / "layout.json";
+    model_->ui().setLayoutPrefs(fs::exists(layout) ? loadLayoutPrefs(layout) : ui::scaledDefaults(window_.uiScale()));
     model_->ui().setEngine(opt.engine);
 }
 

@@ -3,6 +3,7 @@
 #include "renderer/gpu/debug_output.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/present.h"
+#include "ui/layout.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -123,6 +124,16 @@ EditorWindow::EditorWindow(const std::string& title, bool debugContext) : title_
     iniPath_ = (configDir_ / "imgui.ini").string();
     ImGui::GetIO().IniFilename = iniPath_.c_str();
     ImGui::StyleColorsDark();
+    // A 4K window gets its text and widgets twice as large, as a 1080p one shows them (issue 39 #8).
+    int shownW = 0, shownH = 0;
+    glfwGetWindowSize(window_, &shownW, &shownH);
+    uiScale_ = ui::uiScaleFor(shownH, std::getenv("SHADOWTUNE_UI_SCALE"));
+    if (uiScale_ != 1.0f) {
+        ImFontConfig font;
+        font.SizePixels = 13.0f * uiScale_;
+        ImGui::GetIO().Fonts->AddFontDefault(&font);
+        ImGui::GetStyle().ScaleAllSizes(uiScale_);
+    }
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
     // Keys and mouse buttons go through our queues instead of the backend's callbacks, which
     // wrote io.KeysDown directly and latched presses only; the backend keeps the wheel, text,

@@ -47,6 +47,7 @@ public:
     const std::string& title() const { return title_; }  // "shadowtune - <preset file>[ *]"
     void framebufferSize(int& w, int& h) const;
     const std::filesystem::path& configDir() const { return configDir_; }
+    float uiScale() const { return uiScale_; }  // 1, 1.5 or 2 by the window's height (ui::uiScaleFor)
 
 private:
     static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
@@ -58,6 +59,7 @@ private:
     KeyQueue keys_;  // fed to ImGui a change per key per frame, so no tap is lost (issue 13 #3)
     MouseQueue mouse_;  // likewise a button change per frame, at the place it happened
     std::filesystem::path configDir_;
+    float uiScale_ = 1.0f;
     std::string iniPath_;  // must outlive the ImGui context (io.IniFilename points into it)
     std::string title_;
     unsigned long events_ = 0;
