@@ -3,6 +3,7 @@
 #include "renderer/settings/cascade_factors.h"
 #include "renderer/settings/preset_paths.h"
 #include "renderer/settings/settings_json.h"
+#include "ui/path_completion.h"
 
 #include <imgui.h>
 
@@ -31,9 +32,43 @@ void requestLoad(UiFrame& f, const std::filesystem::path& file) {
     f.state.openConfirm = true;
 }
 
+namespace {
+// A glTF of the user's own: a new, untitled preset for its scene (the camera, sun, ground and
+// cascades made for it; no notes, splits or problems of the scene before). Saving asks where.
+void openScene(UiFrame& f, const std::filesystem::path& file) {
+    if (!f.in.presetForScene) {
+        f.state.doc.errors = {file.string() + ": this editor opens presets (.json) only"};
+        return;
+    }
+    Settings made;
+    try {
+        made = f.in.presetForScene(std::filesystem::absolute(file));
+    } catch (const std::exception& e) {
+        f.state.doc.errors = {file.string() + ": " + e.what()};
+        f.state.doc.status.clear();
+        return;
+    }
+    if (const std::string sceneError = sceneProblem(f, made.scene, made.ground, folderOf(file)); !sceneError.empty()) {
+        f.state.doc.errors = {file.string() + ": scene: " + sceneError};
+        return;
+    }
+    Document next;
+    next.schemaHint = f.state.doc.schemaHint;
+    next.status = "new preset for " + file.filename().string() + ": not saved yet (Save as asks where)";
+    f.state.doc = std::move(next);
+    f.state.doc.clean = made;
+    f.s = std::move(made);
+    resetHistory(f.state);
+    f.state.saveAsText = (f.state.presetDir / (file.stem().string() + ".json")).string();
+    f.replaced = true;
+    f.req.presetLoaded = true;
+}
+}  // namespace
+
 // A preset whose scene does not load is refused as a whole: the document, the settings and the
 // history stay as they were (issue 13 #1).
 void loadNow(UiFrame& f, const std::filesystem::path& file) {
+    if (isGltfFile(file)) return openScene(f, file);
     Document next = f.state.doc;
     Settings loaded = f.s;
     const bool read = loadDocument(next, file, loaded);

@@ -78,6 +78,10 @@ struct UiInputs {
     // "" when it loads, else why not; the UI then leaves the settings as they are. Unset: every
     // scene is taken.
     std::function<std::string(const std::string& scene, bool ground, const std::filesystem::path& baseDir)> checkScene;
+    // File > Open on a .gltf or .glb: a new, untitled preset for that scene (its camera framing the
+    // scene, a sun, a ground under it, cascades spanning it: app/scene_preset.h). Throws
+    // std::exception with the reason when the file does not load. Unset: glTF files are refused.
+    std::function<Settings(const std::filesystem::path& gltf)> presetForScene;
     ProbeView probe;                         // the frame at the pixel the last draw() asked for
     std::vector<SideSplitHandle> sideSplitHandles;  // inner split planes in the side view picture
     AbView ab;                               // the A half of the split view (while it is on)

@@ -1,5 +1,5 @@
 // File > Open: a path field (relative paths start in the preset folder, as in "Save as") with
-// the .json files and folders that continue it listed below; Tab completes the common part.
+// the presets, glTF scenes and folders that continue it listed below; Tab completes the common part.
 #include "ui/document_actions.h"
 #include "ui/panels.h"
 #include "ui/path_completion.h"
@@ -54,7 +54,7 @@ void drawCandidates(UiFrame& f) {
         recordItem(f.state.rects, "open:" + c);
     }
     if (candidates.size() > kMaxShown) ImGui::TextDisabled("... %zu more", candidates.size() - kMaxShown);
-    if (candidates.empty()) ImGui::TextDisabled("(no .json file or folder starts so)");
+    if (candidates.empty()) ImGui::TextDisabled("(no preset, glTF scene or folder starts so)");
 }
 
 void drawErrors(const UiFrame& f) {
@@ -78,7 +78,7 @@ void drawOpenDialog(UiFrame& f) {
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.3f), ImGuiCond_Appearing, ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(520.0f, 0.0f), ImGuiCond_Appearing);
     if (ImGui::Begin("Open preset", &f.state.showOpen, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
-        ImGui::TextDisabled("Relative to %s/; Tab completes, Enter opens.", f.state.presetDir.string().c_str());
+        ImGui::TextDisabled("A preset (.json) or a glTF scene (.gltf, .glb: a new preset for it), relative to %s/; Tab completes, Enter opens.", f.state.presetDir.string().c_str());
         if (f.state.focusOpenPath) {  // until it takes: a new window may skip a frame
             ImGui::SetWindowFocus();
             ImGui::SetKeyboardFocusHere();

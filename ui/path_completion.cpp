@@ -1,8 +1,18 @@
 #include "ui/path_completion.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace st::ui {
+
+bool isGltfFile(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".gltf" || ext == ".glb";
+}
+
+// What File > Open takes: a preset, or a glTF scene of the user's own (a new preset for it).
+bool isOpenable(const std::filesystem::path& file) { return file.extension() == ".json" || isGltfFile(file); }
 namespace fs = std::filesystem;
 
 std::vector<std::string> completePresetPath(const fs::path& baseDir, const std::string& typed) {
@@ -18,7 +28,7 @@ std::vector<std::string> completePresetPath(const fs::path& baseDir, const std::
         if (!name.starts_with(namePart) || (name.starts_with('.') && !namePart.starts_with('.'))) continue;
         std::error_code kindError;
         if (it->is_directory(kindError)) out.push_back(folderPart + name + "/");
-        else if (it->path().extension() == ".json") out.push_back(folderPart + name);
+        else if (isOpenable(it->path())) out.push_back(folderPart + name);
     }
     std::sort(out.begin(), out.end());
     return out;

@@ -1,6 +1,7 @@
 #include "app/editor/editor_session.h"
 
 #include "app/editor/layout_file.h"
+#include "app/scene_preset.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -71,6 +72,7 @@ void EditorSession::fillUiInputs(ui::UiInputs& in) const {
     in.checkScene = [m = model_.get()](const std::string& spec, bool ground, const fs::path& baseDir) {
         return m->checkScene(spec, ground, baseDir);
     };
+    in.presetForScene = [](const fs::path& gltf) { return presetForScene(gltf, {}); };
     in.sweep = &model_->sweep().view();
     in.sweepableFields = model_->sweepableFields();
     in.tune = &model_->tune().view();

@@ -126,6 +126,38 @@ TEST_F(EditorFilesTest, FileOpenCompletesJsonPathsAndLoadsTheChosenPreset) {
     EXPECT_FALSE(d.drawn("open.path")) << "the window closes once the preset is loaded";
 }
 
+// Issue 39 #2: File > Open on a .glb makes a new, untitled preset for that scene (the app's
+// presetForScene: here a stand-in), its history fresh, Save as offering <name>.json in the presets
+// folder; a glTF that does not load leaves everything as it was and says why.
+TEST_F(EditorFilesTest, FileOpenOnAGltfMakesANewPresetForIt) {
+    scratch.write("assets/Fox.glb", "");
+    scratch.write("assets/Broken.glb", "");
+    Settings made;
+    made.scene = (scratch.path / "assets" / "s.gltf").string();  // a scene the stand-in loader takes
+    made.cascades.count = 2;
+    d.in.presetForScene = [&](const fs::path& gltf) -> Settings {
+        if (gltf.filename() == "Broken.glb") throw std::runtime_error("glTF: no triangles");
+        return made;
+    };
+    const Settings before = d.s;
+    d.click("menu.file");
+    d.click("menu.open");
+    d.frames(2);
+    d.typeText((scratch.path / "assets" / "Broken.glb").string().c_str());
+    d.pressKey(kKeyEnter);
+    d.frame();
+    EXPECT_EQ(d.s, before) << "a glTF that does not load changes nothing";
+    EXPECT_TRUE(d.drawn("open.path")) << "and the window stays, with the reason";
+    d.pressKey(65, true);  // Ctrl+A: type over the path
+    d.typeText((scratch.path / "assets" / "Fox.glb").string().c_str());
+    d.pressKey(kKeyEnter);
+    d.frame();
+    EXPECT_EQ(d.s, made);
+    EXPECT_TRUE(d.ui().presetFile().empty()) << "untitled: saving asks where";
+    EXPECT_FALSE(d.ui().dirty());
+    EXPECT_FALSE(d.drawn("open.path"));
+}
+
 // Issue 21 #7: typing into File > Open appended to the last path; after a failed Enter the field
 // lost the keyboard and the next Tab swapped the main and side views.
 TEST_F(EditorFilesTest, FileOpenSelectsTheLastPathAndKeepsTheKeyboardAfterAFailedEnter) {

@@ -24,3 +24,17 @@ TEST(PathCompletionTest, FoldersAndJsonFilesThatContinueTheText) {
     EXPECT_EQ(commonPrefix({"scenarios/", "scenes/"}), "scen");
     EXPECT_EQ(commonPrefix({}), "");
 }
+
+// Issue 39 #2: File > Open offers the glTF scenes too (a new preset for each), not other files.
+TEST(PathCompletionTest, GltfScenesAreOfferedBesidePresets) {
+    st::test::ScratchFolder scratch;
+    scratch.write("Fox.glb", "");
+    scratch.write("ship.GLTF", "{}");
+    scratch.write("ship.bin", "");
+    scratch.write("fox.json", "{}");
+    using V = std::vector<std::string>;
+    EXPECT_EQ(completePresetPath(scratch.path, "F"), (V{"Fox.glb"}));
+    EXPECT_EQ(completePresetPath(scratch.path, "s"), (V{"ship.GLTF"})) << "not the .bin beside it";
+    EXPECT_TRUE(isGltfFile("a/b.glb"));
+    EXPECT_FALSE(isGltfFile("a/b.json"));
+}
