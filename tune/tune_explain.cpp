@@ -115,14 +115,14 @@ std::string splitsText(const Settings& s, const nlohmann::json& v, std::string_v
     return inner.empty() ? "none" : valueText(inner, unit) + " (computed)";
 }
 // The artifact figures an artist sees: wrong shadow, wrong light, and the soft truth's classes.
-constexpr const char* kArtifactKeys[] = {"accuracy.falseShadow", "soft.acne", "accuracy.falseLight", "soft.lightBleeding",
+constexpr const char* kExplainedArtifactKeys[] = {"accuracy.falseShadow", "soft.acne", "accuracy.falseLight", "soft.lightBleeding",
                                          "soft.peterPanning", "soft.missingCaster", "flicker.flipRate"};
 
 // "False shadow rises from 0.071 % to 0.207 % of sun-facing pixels": each artifact figure the tuned
 // preset has more of than the input (by more than a tenth and 0.01 points), as a sentence.
 std::vector<std::string> worseFigures(const Evaluation& input, const Evaluation& tuned) {
     std::vector<std::string> out;
-    for (const char* key : kArtifactKeys) {
+    for (const char* key : kExplainedArtifactKeys) {
         const auto a = input.figures.find(key), b = tuned.figures.find(key);
         if (a == input.figures.end() || b == tuned.figures.end() || !a->is_number() || !b->is_number()) continue;
         const double from = a->get<double>(), to = b->get<double>();

@@ -29,8 +29,8 @@ constexpr const char* kSplitNames[3] = {"directional_shadow_split_1", "direction
 
 // directional_soft_shadow_filter_set_quality: directional_soft_shadow_samples and
 // directional_shadow_quality_radius of hard, soft very low, low, medium, high, ultra.
-constexpr std::array<int, 6> kQualityTaps{0, 1, 4, 8, 16, 32};
-constexpr std::array<float, 6> kQualityRadius{1.0f, 1.5f, 2.0f, 2.0f, 3.0f, 4.0f};
+constexpr std::array<int, 6> kGodotQualityTaps{0, 1, 4, 8, 16, 32};
+constexpr std::array<float, 6> kGodotQualityRadius{1.0f, 1.5f, 2.0f, 2.0f, 3.0f, 4.0f};
 
 // Light3D::Light3D and DirectionalLight3D::DirectionalLight3D; the project settings' defaults.
 json godotDefaults() {
@@ -83,8 +83,8 @@ void setFilter(Settings& s, int quality, float blur) {
     // quality radius in texels. Approximate: Godot rotates by its own hash and shrinks the radius by
     // split_0 / split_i in the later splits.
     f.kind = FilterKind::Vogel;
-    f.vogelTaps = kQualityTaps[std::size_t(quality)];
-    f.radius = blur * kQualityRadius[std::size_t(quality)];
+    f.vogelTaps = kGodotQualityTaps[std::size_t(quality)];
+    f.radius = blur * kGodotQualityRadius[std::size_t(quality)];
 }
 
 }  // namespace
@@ -138,7 +138,7 @@ Settings godotModel(const json& given, const Settings& view) {
     b.normalOffset = knobFloat(k, "shadow_normal_bias", 0.0, 10.0);  // x the split's texel (light_storage.cpp)
     b.normalOffsetUnit = OffsetUnit::Texels;
     const std::vector<float> depth =
-        depthBiasPerSplit(s, knobFloat(k, "shadow_bias", 0.0, 10.0), blur * kQualityRadius[std::size_t(quality)], pancake, blend);
+        depthBiasPerSplit(s, knobFloat(k, "shadow_bias", 0.0, 10.0), blur * kGodotQualityRadius[std::size_t(quality)], pancake, blend);
     b.constant = depth.front();
     b.constantUnit = BiasUnit::Metres;
     if (c.count > 1 && b.constant > 0.0f)
@@ -154,8 +154,8 @@ int qualityOf(const FilterSettings& f, std::vector<std::string>& lacks) {
         case FilterKind::Vogel: {
             int q = 1;
             for (int i = 1; i < 6; ++i)
-                if (std::abs(kQualityTaps[std::size_t(i)] - f.vogelTaps) < std::abs(kQualityTaps[std::size_t(q)] - f.vogelTaps)) q = i;
-            if (kQualityTaps[std::size_t(q)] != f.vogelTaps)
+                if (std::abs(kGodotQualityTaps[std::size_t(i)] - f.vogelTaps) < std::abs(kGodotQualityTaps[std::size_t(q)] - f.vogelTaps)) q = i;
+            if (kGodotQualityTaps[std::size_t(q)] != f.vogelTaps)
                 lacks.push_back(std::to_string(f.vogelTaps) + " Vogel taps: Godot's qualities take 1, 4, 8, 16 or 32");
             return q;
         }
@@ -206,12 +206,12 @@ EngineKnobs godotKnobsFor(const Settings& s) {
     k["shadow_reverse_cull_face"] = c.casterFaces == CasterFaces::Back;
     const int quality = qualityOf(s.filter, out.lacks);
     k[kQuality] = quality;
-    const double blur = s.filter.kind == FilterKind::Vogel ? double(s.filter.radius) / kQualityRadius[std::size_t(quality)] : 1.0;
+    const double blur = s.filter.kind == FilterKind::Vogel ? double(s.filter.radius) / kGodotQualityRadius[std::size_t(quality)] : 1.0;
     k["shadow_blur"] = round6(blur);
     const BiasSettings& b = s.bias;
     if (b.constantUnit != BiasUnit::Metres) out.lacks.push_back("a bias in the box's depth: Godot's grows with each split's range");
     const std::vector<float> perUnit =
-        depthBiasPerSplit(s, 100.0, blur * kQualityRadius[std::size_t(quality)], pancake, c.blendBand > 0.0f);
+        depthBiasPerSplit(s, 100.0, blur * kGodotQualityRadius[std::size_t(quality)], pancake, c.blendBand > 0.0f);
     k["shadow_bias"] = perUnit.front() > 0.0f ? round6(100.0 * std::max(0.0f, b.constant) / perUnit.front()) : 0.0;
     if (b.constant < 0.0f) out.lacks.push_back("a bias away from the light");
     for (int i = 1; i < c.count && !b.constantScale.empty(); ++i)
