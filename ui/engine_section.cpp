@@ -52,9 +52,13 @@ bool drawKnob(const std::string& key, json& value) {
         bool b = value.get<bool>();
         if (ImGui::Checkbox(key.c_str(), &b)) value = b, changed = true;
     } else {
+        // The engine's own name on its own line: Godot's run to 70 characters
+        // ("rendering/lights_and_shadows/directional_shadow/size"), cut beside a field at 1000 px.
+        ImGui::TextWrapped("%s", key.c_str());
         char text[256];
         std::snprintf(text, sizeof text, "%s", value.is_string() ? value.get<std::string>().c_str() : value.dump().c_str());
-        if (ImGui::InputText(key.c_str(), text, sizeof text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        ImGui::SetNextItemWidth(-1.0f);
+        if (ImGui::InputText("##value", text, sizeof text, ImGuiInputTextFlags_EnterReturnsTrue)) {
             const json parsed = json::parse(text, nullptr, false);
             value = parsed.is_discarded() ? json(std::string(text)) : parsed;
             changed = true;
