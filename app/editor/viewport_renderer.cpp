@@ -105,6 +105,7 @@ SceneFrameInputs ViewportRenderer::sceneInputs(const EditorModel& model, int wid
 
 bool ViewportRenderer::renderScene(EditorModel& model, const ViewportFrame& f, SceneRender& out) {
     const bool moving = previousValid_ && viewMoving(*previousValid_, model.valid());
+    const bool changed = previousValid_ && !(*previousValid_ == model.valid());
     previousValid_ = model.valid();
     if (!model.splitShown()) abStats_.reset();
     // The split renders at full size, and every frame while A's own Accuracy job is on its way
@@ -113,7 +114,12 @@ bool ViewportRenderer::renderScene(EditorModel& model, const ViewportFrame& f, S
     const bool splitShown = model.splitShown();
     const bool aFiguresPending = splitShown && (!accuracyA_ || accuracyA_->busy());
     const bool scalable = !f.final && !splitShown;
-    const bool interactive = moving && scalable && !model.fullQualityWhileMoving();
+    // A settings change whose last full frame took long (cascades 4 -> 3 froze the window for 3 s
+    // with the old picture, issue 39 #7) is shown first as the interactive preview, at once; the
+    // full frame follows on the next, still frame, and the status line says so.
+    constexpr double kSlowChangeMs = 250.0;
+    const bool slowChange = changed && !moving && lastFullMs_ > kSlowChangeMs;
+    const bool interactive = (moving || slowChange) && scalable && !model.fullQualityWhileMoving();
     const double scale = interactive_.update(interactive, f.lastFrameMs);
     const int width = interactive ? scaledSize(sceneWidth_, scale) : sceneWidth_;
     const int height = interactive ? scaledSize(sceneHeight_, scale) : sceneHeight_;
@@ -135,6 +141,12 @@ bool ViewportRenderer::renderScene(EditorModel& model, const ViewportFrame& f, S
         // scene's and not the panels' (on llvmpipe the swap would wait for it anyway).
         finishDeviceWork();
         sceneMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (!interactive) lastFullMs_ = sceneMs_;
+        if (interactive && slowChange) {
+            char note[128];
+            std::snprintf(note, sizeof note, "preview: the full frame follows (about %.0f ms)", lastFullMs_);
+            model.setRenderMessage(message + (message.empty() ? "" : "\n") + note);
+        }
         out = {true, sceneMs_, scale};
         frameCache_.rendered(in, heldRendered_ ? &stats_ : nullptr, abRendered_ && abStats_ ? &*abStats_ : nullptr);
         heldInteractive_ = interactive;

@@ -107,6 +107,7 @@ private:
     int heldMapSize_ = 0;           // its cascades.mapSize while interactive
     int heldWidth_ = 0, heldHeight_ = 0;
     double sceneMs_ = 0.0;          // wall time of the held image's render
+    double lastFullMs_ = 0.0;       // ... of the last full-quality one (a slow change previews first)
     bool sceneReused_ = false;      // this frame showed the held image again
     AbSplitRender ab_;
     std::optional<FrameStats> abStats_;  // A's last frame while the split is on
