@@ -9,8 +9,29 @@
 # reference's on the tuned and held-out views. Goal (issue 19): <= 0.15 s per evaluation and
 # <= 3 minutes per tune on the 2-core CI machine; misclassified <= 0.40 % on the tuned views.
 #   scripts/bench_tune.sh [BUILD_DIR] [EVALUATIONS] [OUT_DIR] [SIZE] [OBJECTIVE]   needs ../shared/assets
+# With --engine NAME first (threejs, babylon, godot; issue "Tune for your engine", goal <= 3 minutes):
+# one engine-bound tune of truck-town with default options instead, its wall-clock and search
+# seconds (the rest: the proof in the engine, for three.js and Babylon.js), and the figures.
+#   scripts/bench_tune.sh --engine NAME [BUILD_DIR] [OUT_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+if [[ ${1:-} == --engine ]]; then
+  engine=${2:?--engine needs threejs, babylon or godot}
+  build=${3:-$root/build/release}
+  out=${4:-$(mktemp -d)/tune-$engine}
+  mkdir -p "$(dirname "$out")"
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
+  echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  cd "$root"
+  start=$(date +%s.%N)
+  EGL_PLATFORM=surfaceless "$build/shadowtune" tune presets/scenes/truck-town.json --engine "$engine" --out "$out" >"$out.log" 2>&1
+  end=$(date +%s.%N)
+  echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  grep -E '^(reference|budget|tuned|held-out|in |time)' "$out.log" || true
+  printf 'tune --engine %s on truck-town: %.1f s wall-clock (search %.1f s), goal <= 180 s\n' "$engine" \
+    "$(echo "$end - $start" | bc)" "$(jq '.seconds' "$out/summary.json")"
+  exit 0
+fi
 build=${1:-$root/build/release}
 evaluations=${2:-80}
 out=${3:-$(mktemp -d)/tune}
