@@ -63,3 +63,19 @@ TEST(LegendsTest, SceneShowsTheLegendOfItsDebugView) {
     EXPECT_TRUE(d.drawn("legend.density"));
     EXPECT_LE(d.rect("legend.density").max.y, scene.y + d.last.sceneSize.y);
 }
+
+// Issue 39 #9: after Tab the scene viewport shows the side camera's wireframes: their key goes
+// with them, and the debug view's own legend does not (it belongs to the small picture now).
+TEST(LegendsTest, AfterTabTheBigViewportCarriesTheWireframeKey) {
+    UiDriver d;
+    FrameStats stats = fakeFrameStats();
+    d.in.stats = &stats;
+    d.s.output.view = View::TexelDensity;
+    d.frames(2);
+    ASSERT_TRUE(d.drawn("legend.density"));
+    EXPECT_FALSE(d.drawn("legend.cascades"));
+    d.in.sideViewSwapped = true;
+    d.frames(2);
+    EXPECT_TRUE(d.drawn("legend.cascades")) << "the side camera's wireframe key over the big viewport";
+    EXPECT_FALSE(d.drawn("legend.density")) << "the main view's legend is not drawn over the side camera";
+}
