@@ -160,6 +160,15 @@ bool beginDockedPanel(UiFrame& f, Panel panel, const char* name, bool* open, ImG
     return visible;
 }
 
+void placeOverRightColumn(const UiFrame& f, float width) {
+    const Layout& l = f.state.layout;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float top = l.scene.min.y, bottom = l.status.empty() ? display.y : l.status.min.y;
+    const float w = std::min(std::max(width * currentLayoutMetrics().scale, l.presets.width()), display.x * 0.5f);
+    ImGui::SetNextWindowPos({display.x - w, top}, ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize({w, std::max(200.0f, bottom - top)}, ImGuiCond_Appearing);
+}
+
 void placeNextWindow(Panel panel) {
     Rect area;
     switch (panel) {

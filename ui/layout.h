@@ -78,4 +78,9 @@ bool beginDockedPanel(UiFrame& f, Panel panel, const char* name, bool* open, ImG
 // For the floating windows (zoom, help, confirmation): where they first appear, centred.
 void placeNextWindow(Panel panel);
 
+// The Tune and Sweep windows, each time they open: over the right column (Presets, Shadow maps,
+// Side view), at least `width` wide and growing left from the window's edge, the column's height,
+// so the scene and an A/B split's halves stay in view (they opened over the scene, issue 39 #8).
+void placeOverRightColumn(const UiFrame& f, float width);
+
 }  // namespace st::ui

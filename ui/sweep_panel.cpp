@@ -157,8 +157,7 @@ void chart(UiFrame& f, const SweepView& v) {
 void drawSweepPanel(UiFrame& f) {
     CompareUiState& c = f.state.compare;
     if (!c.showSweep) return;
-    ImGui::SetNextWindowPos({436.0f, 130.0f}, ImGuiCond_FirstUseEver);  // over the scene view's lower part
-    ImGui::SetNextWindowSize({510.0f, 585.0f}, ImGuiCond_FirstUseEver);
+    placeOverRightColumn(f, 510.0f);
     if (ImGui::Begin("Sweep", &c.showSweep)) {
         if (ImGui::Button("Set as A")) setAsA(f);
         recordItem(f.state.rects, "sweep.setA");

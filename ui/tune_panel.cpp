@@ -227,9 +227,10 @@ void drawTunePanel(UiFrame& f) {
     TuneUiState& t = f.state.tune;
     if (t.appliedAs && *t.appliedAs != f.s) t.applied.clear(), t.appliedAs.reset();  // a later edit
     if (!t.show) return;
-    ImGui::SetNextWindowPos({420.0f, 90.0f}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({540.0f, 640.0f}, ImGuiCond_FirstUseEver);
+    placeOverRightColumn(f, 540.0f);
     if (ImGui::Begin("Tune", &t.show)) {
+        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        f.state.rects["window.Tune"] = {pos, {pos.x + size.x, pos.y + size.y}};
         const TuneView* v = f.in.tune;
         ImGui::BeginDisabled(running(v));
         budgetFields(f);

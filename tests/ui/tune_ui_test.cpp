@@ -183,3 +183,14 @@ TEST_F(TuneUiTest, AdviceOpensThePanelOnItsFigure) {
     EXPECT_EQ(ui::tuneObjectiveFor("coarse-texel"), "misclassified");
     EXPECT_EQ(ui::tuneObjectiveFor("acne"), "acne");
 }
+
+// Issue 39 #8: the Tune window opens over the right column, not over the scene's left half (an
+// A/B split's A) where it opened before.
+TEST_F(TuneUiTest, TheTuneWindowOpensOverTheRightColumn) {
+    openTunePanel();
+    d.frame();
+    const ui::ItemRect w = d.rect("window.Tune");
+    const float sceneMid = d.last.scenePos.x + 0.5f * d.last.sceneSize.x;
+    EXPECT_GT(w.min.x, sceneMid) << "the scene's left half stays in view";
+    EXPECT_NEAR(w.max.x, ImGui::GetIO().DisplaySize.x, 1.0f) << "against the window's right edge";
+}
