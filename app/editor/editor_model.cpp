@@ -131,7 +131,9 @@ void EditorModel::apply(const ui::UiRequests& r) {
     if (r.change != ChangeClass::None) actionMessage_.clear();
     if (r.frameScene) {  // moves the camera only, as one undo step; near/far are tuning settings
         const Settings before = settings_;
-        actionMessage_ = frameKeepingClipPlanes(settings_.camera, scene_->wsBounds);
+        std::vector<csm::Aabb> items;
+        for (const DrawItem& d : scene_->draws) items.push_back(d.wsBounds);
+        actionMessage_ = frameKeepingClipPlanes(settings_.camera, framingBounds(items, scene_->wsBounds));
         ui_->recordEdit(before, settings_);
     }
     if (r.swapSideView) swapped_ = !swapped_;

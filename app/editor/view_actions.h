@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace st::app {
 
@@ -15,6 +16,12 @@ namespace st::app {
 // the camera comes in to half the far plane from the centre (same direction) and the result
 // says so ("the scene reaches 5938 m, past the far plane (1500 m) ..."); else "".
 std::string frameKeepingClipPlanes(CameraSettings& cam, const csm::Aabb& wsBounds);
+
+// What F frames: the union of the draw items' bounds without those that sprawl (more than 20 times
+// the median item's diagonal: a 2 km terrain under a town of 8 m houses, where framing everything
+// made the town a speck, issue 39 #8); all of `whole` with fewer than 3 items, nothing sprawling,
+// or when the sprawling ones are half the items or more.
+csm::Aabb framingBounds(const std::vector<csm::Aabb>& items, const csm::Aabb& whole);
 
 // Turns per-frame camera changes into gestures: from the first frame that moves the camera to
 // the first frame with the mouse button released.

@@ -42,6 +42,20 @@ TEST(ViewActionsTest, FrameSceneKeepsTheViewingDirection) {
     EXPECT_GT(cam.position.y, 30.0f) << "above the centre, looking down as before";
 }
 
+// Issue 39 #8: F on a town on a 2 km terrain framed the terrain; the houses became a speck.
+TEST(ViewActionsTest, FrameSceneLeavesOutWhatSprawls) {
+    const csm::Aabb terrain{{-1000, -5, -1000}, {1000, 50, 1000}};
+    std::vector<csm::Aabb> items{terrain};
+    for (int i = 0; i < 6; ++i) items.push_back({{float(i) * 10.0f, 0, 0}, {float(i) * 10.0f + 8.0f, 6, 8}});
+    const csm::Aabb framed = framingBounds(items, terrain);
+    EXPECT_FLOAT_EQ(framed.min.x, 0.0f);
+    EXPECT_FLOAT_EQ(framed.max.x, 58.0f);
+    EXPECT_FLOAT_EQ(framed.max.y, 6.0f) << "the houses, not the terrain";
+    EXPECT_FLOAT_EQ(framingBounds({items.begin(), items.begin() + 2}, terrain).max.x, 1000.0f) << "too few items to judge";
+    std::vector<csm::Aabb> similar(items.begin() + 1, items.end());
+    EXPECT_FLOAT_EQ(framingBounds(similar, terrain).max.x, 1000.0f) << "nothing sprawls: the whole scene";
+}
+
 TEST(ViewActionsTest, ACameraGestureEndsWhenTheButtonIsReleased) {
     CameraGesture g;
     CameraSettings a, b = a, c = a;
