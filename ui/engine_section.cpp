@@ -45,7 +45,7 @@ void drawEngineChoice(UiFrame& f) {
 }
 
 // One knob: a checkbox for a bool, else its JSON text (a bare word is taken as a string).
-bool drawKnob(const std::string& key, json& value) {
+bool drawKnob(const std::string& key, const std::string& unit, json& value) {
     ImGui::PushID(key.c_str());
     bool changed = false;
     if (value.is_boolean()) {
@@ -54,7 +54,8 @@ bool drawKnob(const std::string& key, json& value) {
     } else {
         // The engine's own name on its own line: Godot's run to 70 characters
         // ("rendering/lights_and_shadows/directional_shadow/size"), cut beside a field at 1000 px.
-        ImGui::TextWrapped("%s", key.c_str());
+        const std::string label = unit.empty() ? key : key + " (" + unit + ")";
+        ImGui::TextWrapped("%s", label.c_str());
         char text[256];
         std::snprintf(text, sizeof text, "%s", value.is_string() ? value.get<std::string>().c_str() : value.dump().c_str());
         ImGui::SetNextItemWidth(-1.0f);
@@ -72,7 +73,7 @@ void drawKnobs(UiFrame& f, xport::Engine e, const xport::EngineKnobs& k) {
     EngineUiState& st = f.state.engine;
     for (auto it = k.knobs.begin(); it != k.knobs.end(); ++it) {
         json value = it.value();
-        const bool edited = drawKnob(it.key(), value);
+        const bool edited = drawKnob(it.key(), xport::knobUnit(e, it.key()), value);
         recordItem(f.state.rects, "engine.knob." + it.key());
         if (!edited) continue;
         json knobs = k.knobs;

@@ -75,6 +75,26 @@ EngineKnobs knobsFor(Engine e, const Settings& s) {
     return e == Engine::ThreeJs ? threejsKnobsFor(s) : e == Engine::Babylon ? babylonKnobsFor(s) : godotKnobsFor(s);
 }
 
+std::string knobUnit(Engine e, const std::string& knob) {
+    static const std::vector<std::pair<std::string, std::string>> threejs{
+        {"maxFar", "m"}, {"shadowMapSize", "texels"}, {"shadowBias", "share of lightNear..lightFar"},
+        {"normalBias", "m"}, {"radius", "texels"}, {"lightNear", "m"}, {"lightFar", "m"}, {"lightMargin", "m"},
+        {"breaks", "shares of maxFar"}};
+    static const std::vector<std::pair<std::string, std::string>> babylon{
+        {"mapSize", "texels"}, {"shadowMaxZ", "m"}, {"cascadeBlendPercentage", "share of a slice"},
+        {"bias", "share of each box's depth"}, {"normalBias", "m"}};
+    static const std::vector<std::pair<std::string, std::string>> godot{
+        {"directional_shadow_split_1", "share of max distance"}, {"directional_shadow_split_2", "share of max distance"},
+        {"directional_shadow_split_3", "share of max distance"}, {"directional_shadow_max_distance", "m"},
+        {"directional_shadow_pancake_size", "m"}, {"directional_shadow_fade_start", "share of max distance"},
+        {"shadow_bias", "x split depth range / 100"}, {"shadow_normal_bias", "texels"},
+        {"rendering/lights_and_shadows/directional_shadow/size", "texels"}};
+    const auto& table = e == Engine::ThreeJs ? threejs : e == Engine::Babylon ? babylon : godot;
+    for (const auto& [name, unit] : table)
+        if (name == knob) return unit;
+    return "";
+}
+
 std::vector<std::string> engineFieldPaths(Engine e) {
     requireTable(e);
     switch (e) {

@@ -38,6 +38,10 @@ nlohmann::json defaultKnobs(Engine e);
 // The nearest knobs the engine takes for `s` (missing ones keep the defaults), and what it lacks.
 EngineKnobs knobsFor(Engine e, const Settings& s);
 
+// A knob's unit as the engine's documentation gives it ("m", "texels", "share of the light's
+// depth", ...), "" for a count, a choice or a flag.
+std::string knobUnit(Engine e, const std::string& knob);
+
 // The shadow settings (cascades.*, filter.*, bias.*) the engine's knobs set; every other one of
 // those groups is fixed by the engine (its model sets it) or has no knob there. The editor greys
 // the rest; the tuner's space for the engine (tune/tune_engine.h) moves these only.

@@ -140,6 +140,15 @@ TEST(EngineKnobsTest, WhatGodotLacksIsListedAndItsModesHoldOneTwoOrFourSplits) {
     EXPECT_THROW(defaultKnobs(Engine::Unity), std::invalid_argument) << "no knob table for Unity yet";
     EXPECT_TRUE(runsHere(Engine::ThreeJs));
     EXPECT_FALSE(runsHere(Engine::Godot));
+    // The knobs carry their units (a knob renamed in its table without its unit would drop below).
+    for (Engine e : {Engine::ThreeJs, Engine::Babylon, Engine::Godot}) {
+        int withUnit = 0;
+        const nlohmann::json knobs = defaultKnobs(e);
+        for (auto it = knobs.begin(); it != knobs.end(); ++it) withUnit += !knobUnit(e, it.key()).empty();
+        EXPECT_GE(withUnit, 4) << engineName(e);
+    }
+    EXPECT_EQ(knobUnit(Engine::Godot, "shadow_normal_bias"), "texels");
+    EXPECT_EQ(knobUnit(Engine::ThreeJs, "normalBias"), "m");
 }
 
 }  // namespace
