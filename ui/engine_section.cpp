@@ -144,7 +144,7 @@ bool engineLacksField(const UiFrame& f, std::string_view path) {
     if (!e) return false;
     const std::string_view group = path.substr(0, path.find('.'));
     if (group != "cascades" && group != "filter" && group != "bias") return false;
-    const std::vector<std::string> paths = xport::engineFieldPaths(*e);
+    const std::vector<std::string>& paths = xport::engineFieldPaths(*e);
     return std::find(paths.begin(), paths.end(), path) == paths.end();
 }
 

@@ -95,24 +95,23 @@ std::string knobUnit(Engine e, const std::string& knob) {
     return "";
 }
 
-std::vector<std::string> engineFieldPaths(Engine e) {
+const std::vector<std::string>& engineFieldPaths(Engine e) {
     requireTable(e);
-    switch (e) {
-        case Engine::ThreeJs:  // CSM's options, the lights' shadow properties, the renderer's map type, shadowSide
-            return {"cascades.count",      "cascades.scheme",   "cascades.manualSplits", "cascades.shadowDistance",
-                    "cascades.mapSize",    "cascades.zExtensionDistance", "cascades.lightDepth", "cascades.casterFaces",
-                    "cascades.blendBand",  "filter.kind",       "filter.radius",         "bias.constant",
-                    "bias.normalOffset"};
-        case Engine::Babylon:  // CascadedShadowGenerator's properties
-            return {"cascades.count", "cascades.lambda",   "cascades.shadowDistance", "cascades.mapSize", "cascades.fit",
-                    "cascades.zExtension", "cascades.blendBand", "filter.kind", "filter.size", "bias.constant",
-                    "bias.normalOffset"};
-        default:  // Godot: DirectionalLight3D and the directional shadow project settings
-            return {"cascades.count",      "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
-                    "cascades.zExtensionDistance", "cascades.blendBand", "cascades.fadeBand", "cascades.casterFaces",
-                    "filter.kind",         "filter.vogelTaps",      "filter.radius",           "bias.constant",
-                    "bias.normalOffset"};
-    }
+    // CSM's options, the lights' shadow properties, the renderer's map type, shadowSide.
+    static const std::vector<std::string> threejs{
+        "cascades.count",    "cascades.scheme",    "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
+        "cascades.zExtensionDistance", "cascades.lightDepth", "cascades.casterFaces", "cascades.blendBand", "filter.kind",
+        "filter.radius",     "bias.constant",      "bias.normalOffset"};
+    // CascadedShadowGenerator's properties.
+    static const std::vector<std::string> babylon{
+        "cascades.count", "cascades.lambda",   "cascades.shadowDistance", "cascades.mapSize", "cascades.fit",
+        "cascades.zExtension", "cascades.blendBand", "filter.kind", "filter.size", "bias.constant", "bias.normalOffset"};
+    // DirectionalLight3D and the directional shadow project settings.
+    static const std::vector<std::string> godot{
+        "cascades.count",   "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
+        "cascades.zExtensionDistance", "cascades.blendBand", "cascades.fadeBand", "cascades.casterFaces", "filter.kind",
+        "filter.vogelTaps", "filter.radius",         "bias.constant",           "bias.normalOffset"};
+    return e == Engine::ThreeJs ? threejs : e == Engine::Babylon ? babylon : godot;
 }
 
 Settings engineModel(Engine e, const nlohmann::json& knobs, const Settings& view) {

@@ -45,7 +45,7 @@ std::string knobUnit(Engine e, const std::string& knob);
 // The shadow settings (cascades.*, filter.*, bias.*) the engine's knobs set; every other one of
 // those groups is fixed by the engine (its model sets it) or has no knob there. The editor greys
 // the rest; the tuner's space for the engine (tune/tune_engine.h) moves these only.
-std::vector<std::string> engineFieldPaths(Engine e);
+const std::vector<std::string>& engineFieldPaths(Engine e);  // built once per engine
 
 // What the engine does with `knobs`, as shadowtune settings: `view`'s scene, camera, light,
 // output and measure settings, with the cascades, filter and bias the engine would use. Throws
