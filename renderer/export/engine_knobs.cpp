@@ -15,15 +15,38 @@ std::optional<Engine> parseKnobEngine(const std::string& name) {
     return e && hasKnobTable(*e) ? e : std::nullopt;
 }
 
-bool hasKnobTable(Engine e) { return e == Engine::ThreeJs || e == Engine::Babylon || e == Engine::Godot; }
+namespace {
+const KnobTable* tableOf(Engine e) {
+    switch (e) {
+        case Engine::ThreeJs: return &threejsTable();
+        case Engine::Babylon: return &babylonTable();
+        case Engine::Godot: return &godotTable();
+        default: return nullptr;
+    }
+}
+
+std::string listOf(bool (*has)(Engine)) {
+    std::string out;
+    for (std::size_t i = 0; i < kEngineNames.size(); ++i)
+        if (has(Engine(i))) out += (out.empty() ? "" : ", ") + std::string(kEngineNames[i]);
+    return out;
+}
+}  // namespace
+
+bool hasKnobTable(Engine e) { return tableOf(e) != nullptr; }
 
 bool runsHere(Engine e) { return e == Engine::ThreeJs || e == Engine::Babylon; }
 
 std::string engineName(Engine e) { return std::string(kEngineNames[std::size_t(e)]); }
 
-std::string knobEngineList() { return "threejs, babylon, godot"; }
+std::string knobEngineList() { return listOf(hasKnobTable); }
 
-std::string loopEngineList() { return "threejs, babylon"; }
+std::string loopEngineList() { return listOf(runsHere); }
+
+const KnobTable& knobTable(Engine e) {
+    if (const KnobTable* t = tableOf(e)) return *t;
+    throw std::invalid_argument(engineName(e) + " has no knob table yet (engines with one: " + knobEngineList() + ")");
+}
 
 nlohmann::json withDefaults(const nlohmann::json& defaults, const nlohmann::json& given) {
     nlohmann::json out = defaults;
@@ -58,68 +81,22 @@ int knobInt(const nlohmann::json& knobs, const char* name, int lo, int hi) {
 
 std::vector<float> presetSplits(const Settings& s) { return csm::planSplits(s, std::nullopt); }
 
-namespace {
-void requireTable(Engine e) {
-    if (!hasKnobTable(e))
-        throw std::invalid_argument(engineName(e) + " has no knob table yet (engines with one: " + knobEngineList() + ")");
-}
-}  // namespace
+nlohmann::json defaultKnobs(Engine e) { return knobTable(e).defaults(); }
 
-nlohmann::json defaultKnobs(Engine e) {
-    requireTable(e);
-    return e == Engine::ThreeJs ? threejsDefaultKnobs() : e == Engine::Babylon ? babylonDefaultKnobs() : godotDefaultKnobs();
-}
-
-EngineKnobs knobsFor(Engine e, const Settings& s) {
-    requireTable(e);
-    return e == Engine::ThreeJs ? threejsKnobsFor(s) : e == Engine::Babylon ? babylonKnobsFor(s) : godotKnobsFor(s);
-}
+EngineKnobs knobsFor(Engine e, const Settings& s) { return knobTable(e).knobsFor(s); }
 
 std::string knobUnit(Engine e, const std::string& knob) {
-    static const std::vector<std::pair<std::string, std::string>> threejs{
-        {"maxFar", "m"}, {"shadowMapSize", "texels"}, {"shadowBias", "share of lightNear..lightFar"},
-        {"normalBias", "m"}, {"radius", "texels"}, {"lightNear", "m"}, {"lightFar", "m"}, {"lightMargin", "m"},
-        {"breaks", "shares of maxFar"}};
-    static const std::vector<std::pair<std::string, std::string>> babylon{
-        {"mapSize", "texels"}, {"shadowMaxZ", "m"}, {"cascadeBlendPercentage", "share of a slice"},
-        {"bias", "share of each box's depth"}, {"normalBias", "m"}};
-    static const std::vector<std::pair<std::string, std::string>> godot{
-        {"directional_shadow_split_1", "share of max distance"}, {"directional_shadow_split_2", "share of max distance"},
-        {"directional_shadow_split_3", "share of max distance"}, {"directional_shadow_max_distance", "m"},
-        {"directional_shadow_pancake_size", "m"}, {"directional_shadow_fade_start", "share of max distance"},
-        {"shadow_bias", "x split depth range / 100"}, {"shadow_normal_bias", "texels"},
-        {"rendering/lights_and_shadows/directional_shadow/size", "texels"}};
-    const auto& table = e == Engine::ThreeJs ? threejs : e == Engine::Babylon ? babylon : godot;
-    for (const auto& [name, unit] : table)
+    for (const auto& [name, unit] : knobTable(e).units)
         if (name == knob) return unit;
     return "";
 }
 
-const std::vector<std::string>& engineFieldPaths(Engine e) {
-    requireTable(e);
-    // CSM's options, the lights' shadow properties, the renderer's map type, shadowSide.
-    static const std::vector<std::string> threejs{
-        "cascades.count",    "cascades.scheme",    "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
-        "cascades.zExtensionDistance", "cascades.lightDepth", "cascades.casterFaces", "cascades.blendBand", "filter.kind",
-        "filter.radius",     "bias.constant",      "bias.normalOffset"};
-    // CascadedShadowGenerator's properties.
-    static const std::vector<std::string> babylon{
-        "cascades.count", "cascades.lambda",   "cascades.shadowDistance", "cascades.mapSize", "cascades.fit",
-        "cascades.zExtension", "cascades.blendBand", "filter.kind", "filter.size", "bias.constant", "bias.normalOffset"};
-    // DirectionalLight3D and the directional shadow project settings.
-    static const std::vector<std::string> godot{
-        "cascades.count",   "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
-        "cascades.zExtensionDistance", "cascades.blendBand", "cascades.fadeBand", "cascades.casterFaces", "filter.kind",
-        "filter.vogelTaps", "filter.radius",         "bias.constant",           "bias.normalOffset"};
-    return e == Engine::ThreeJs ? threejs : e == Engine::Babylon ? babylon : godot;
-}
+const std::vector<std::string>& engineFieldPaths(Engine e) { return knobTable(e).fieldPaths; }
 
 Settings engineModel(Engine e, const nlohmann::json& knobs, const Settings& view) {
-    requireTable(e);
+    const KnobTable& t = knobTable(e);
     try {
-        return e == Engine::ThreeJs   ? threejsModel(knobs, view)
-               : e == Engine::Babylon ? babylonModel(knobs, view)
-                                      : godotModel(knobs, view);
+        return t.model(knobs, view);
     } catch (const nlohmann::json::exception& ex) {
         throw std::invalid_argument(std::string("settings: ") + ex.what());
     }

@@ -22,7 +22,7 @@ bool hasKnobTable(Engine e);
 // The engines `engine-check` runs here, in headless Chromium: three.js and Babylon.js.
 bool runsHere(Engine e);
 std::string engineName(Engine e);  // "threejs", "babylon", "godot", ...
-std::string knobEngineList();      // "threejs, babylon, godot"
+std::string knobEngineList();      // "godot, threejs, babylon", in kEngineNames order
 std::string loopEngineList();      // "threejs, babylon"
 
 struct EngineKnobs {

@@ -132,4 +132,15 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     return out;
 }
 
+const KnobTable& babylonTable() {
+    static const KnobTable table{
+        babylonDefaultKnobs, babylonModel, babylonKnobsFor, babylonSnippets,
+        {{"mapSize", "texels"}, {"shadowMaxZ", "m"}, {"cascadeBlendPercentage", "share of a slice"},
+         {"bias", "share of each box's depth"}, {"normalBias", "m"}},
+        // CascadedShadowGenerator's properties.
+        {"cascades.count", "cascades.lambda", "cascades.shadowDistance", "cascades.mapSize", "cascades.fit",
+         "cascades.zExtension", "cascades.blendBand", "filter.kind", "filter.size", "bias.constant", "bias.normalOffset"}};
+    return table;
+}
+
 }  // namespace st::xport

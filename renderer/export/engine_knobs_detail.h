@@ -2,6 +2,7 @@
 // What the engine knob tables share (engine_knobs_*.cpp): reading a knob with its range checked,
 // and the split depths a preset renders with.
 #include "renderer/export/engine_knobs.h"
+#include "renderer/export/engine_snippets.h"
 #include "renderer/settings/enum_names.h"
 
 #include <nlohmann/json.hpp>
@@ -19,6 +20,26 @@ float knobFloat(const nlohmann::json& knobs, const char* name, double lo, double
 int knobInt(const nlohmann::json& knobs, const char* name, int lo, int hi);
 // The count + 1 view depths the preset's cascades span (renderer/csm/cascade_plan.h, no samples).
 std::vector<float> presetSplits(const Settings& s);
+
+// One engine's knob table: what engine_knobs.h and engine_snippets.h answer for it. A new engine is
+// a file defining its table and one line in engine_knobs.cpp's tableOf.
+struct KnobTable {
+    nlohmann::json (*defaults)();
+    Settings (*model)(const nlohmann::json& knobs, const Settings& view);
+    EngineKnobs (*knobsFor)(const Settings& s);
+    std::vector<PasteText> (*snippets)(const nlohmann::json& knobs);
+    std::vector<std::pair<std::string, std::string>> units;  // knob -> its unit, as the engine documents it
+    std::vector<std::string> fieldPaths;                     // engineFieldPaths
+};
+// The engine's table; throws std::invalid_argument for an engine without one.
+const KnobTable& knobTable(Engine e);
+const KnobTable& threejsTable();
+const KnobTable& babylonTable();
+const KnobTable& godotTable();
+
+std::vector<PasteText> threejsSnippets(const nlohmann::json& knobs);
+std::vector<PasteText> babylonSnippets(const nlohmann::json& knobs);
+std::vector<PasteText> godotSnippets(const nlohmann::json& knobs);
 
 nlohmann::json threejsDefaultKnobs();
 Settings threejsModel(const nlohmann::json& knobs, const Settings& view);

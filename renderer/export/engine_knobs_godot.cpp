@@ -227,4 +227,19 @@ EngineKnobs godotKnobsFor(const Settings& s) {
     return out;
 }
 
+const KnobTable& godotTable() {
+    static const KnobTable table{
+        godotDefaultKnobs, godotModel, godotKnobsFor, godotSnippets,
+        {{"directional_shadow_split_1", "share of max distance"}, {"directional_shadow_split_2", "share of max distance"},
+         {"directional_shadow_split_3", "share of max distance"}, {"directional_shadow_max_distance", "m"},
+         {"directional_shadow_pancake_size", "m"}, {"directional_shadow_fade_start", "share of max distance"},
+         {"shadow_bias", "x split depth range / 100"}, {"shadow_normal_bias", "texels"},
+         {"rendering/lights_and_shadows/directional_shadow/size", "texels"}},
+        // DirectionalLight3D and the directional shadow project settings.
+        {"cascades.count", "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
+         "cascades.zExtensionDistance", "cascades.blendBand", "cascades.fadeBand", "cascades.casterFaces", "filter.kind",
+         "filter.vogelTaps", "filter.radius", "bias.constant", "bias.normalOffset"}};
+    return table;
+}
+
 }  // namespace st::xport

@@ -171,4 +171,17 @@ EngineKnobs threejsKnobsFor(const Settings& s) {
     return out;
 }
 
+const KnobTable& threejsTable() {
+    static const KnobTable table{
+        threejsDefaultKnobs, threejsModel, threejsKnobsFor, threejsSnippets,
+        {{"maxFar", "m"}, {"shadowMapSize", "texels"}, {"shadowBias", "share of lightNear..lightFar"},
+         {"normalBias", "m"}, {"radius", "texels"}, {"lightNear", "m"}, {"lightFar", "m"}, {"lightMargin", "m"},
+         {"breaks", "shares of maxFar"}},
+        // CSM's options, the lights' shadow properties, the renderer's map type, shadowSide.
+        {"cascades.count", "cascades.scheme", "cascades.manualSplits", "cascades.shadowDistance", "cascades.mapSize",
+         "cascades.zExtensionDistance", "cascades.lightDepth", "cascades.casterFaces", "cascades.blendBand", "filter.kind",
+         "filter.radius", "bias.constant", "bias.normalOffset"}};
+    return table;
+}
+
 }  // namespace st::xport

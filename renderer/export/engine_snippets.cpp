@@ -1,5 +1,7 @@
 #include "renderer/export/engine_snippets.h"
 
+#include "renderer/export/engine_knobs_detail.h"
+
 #include <string>
 
 namespace st::xport {
@@ -59,6 +61,11 @@ std::string babylonSnippet(const nlohmann::json& k) {
     return js;
 }
 
+}  // namespace
+
+std::vector<PasteText> threejsSnippets(const nlohmann::json& k) { return {{"threejs.js", threejsSnippet(k)}}; }
+std::vector<PasteText> babylonSnippets(const nlohmann::json& k) { return {{"babylon.js", babylonSnippet(k)}}; }
+
 // Godot 4: the light's property lines as a .tscn holds them, and project.godot's [rendering] lines.
 std::vector<PasteText> godotSnippets(const nlohmann::json& k) {
     std::string light = "; Godot 4, from shadowtune. The sun's DirectionalLight3D properties: paste under\n"
@@ -73,12 +80,6 @@ std::vector<PasteText> godotSnippets(const nlohmann::json& k) {
     return {{"godot-light.tscn", light}, {"godot-project.godot", project}};
 }
 
-}  // namespace
-
-std::vector<PasteText> engineSnippets(Engine e, const nlohmann::json& knobs) {
-    if (e == Engine::ThreeJs) return {{"threejs.js", threejsSnippet(knobs)}};
-    if (e == Engine::Babylon) return {{"babylon.js", babylonSnippet(knobs)}};
-    return godotSnippets(knobs);
-}
+std::vector<PasteText> engineSnippets(Engine e, const nlohmann::json& knobs) { return knobTable(e).snippets(knobs); }
 
 }  // namespace st::xport
