@@ -1,11 +1,13 @@
 #include "tune/tune_engine.h"
 
+#include "tune/tune_engine_dims.h"
+
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 namespace st::tune {
-namespace {
 
 std::vector<nlohmann::json> engineNumbers(std::initializer_list<double> values) { return {values.begin(), values.end()}; }
 std::vector<nlohmann::json> engineNames(std::initializer_list<const char*> values) { return {values.begin(), values.end()}; }
@@ -24,6 +26,8 @@ std::vector<nlohmann::json> engineSplitDepths(const Settings& base) {
         d.emplace_back(farPlaneShare(base, share));
     return d;
 }
+
+namespace {
 
 void threejsDims(Space& s, const Settings& base) {
     auto add = [&](std::string path, std::vector<nlohmann::json> values) { s.dims.push_back({std::move(path), std::move(values)}); };
@@ -97,9 +101,12 @@ Settings ontoEngine(xport::Engine e, const Settings& s) {
 
 Space engineSpace(xport::Engine e, const Settings& base) {
     Space s;
-    if (e == xport::Engine::ThreeJs) threejsDims(s, base);
-    else if (e == xport::Engine::Babylon) babylonDims(s, base);
-    else godotDims(s, base);
+    switch (e) {
+        case xport::Engine::ThreeJs: threejsDims(s, base); break;
+        case xport::Engine::Babylon: babylonDims(s, base); break;
+        case xport::Engine::Godot: godotDims(s, base); break;
+        default: throw std::invalid_argument(xport::engineName(e) + " has no tuning space yet");
+    }
     s.project = [e](const Settings& x) { return ontoEngine(e, x); };
     for (Dimension& d : s.dims) {
         const auto starts = [&](const char* prefix) { return d.path.rfind(prefix, 0) == 0; };
