@@ -105,6 +105,8 @@ Space engineSpace(xport::Engine e, const Settings& base) {
         case xport::Engine::ThreeJs: threejsDims(s, base); break;
         case xport::Engine::Babylon: babylonDims(s, base); break;
         case xport::Engine::Godot: godotDims(s, base); break;
+        case xport::Engine::Unity: unityDims(s, base); break;
+        case xport::Engine::Unreal: unrealDims(s, base); break;
         default: throw std::invalid_argument(xport::engineName(e) + " has no tuning space yet");
     }
     s.project = [e](const Settings& x) { return ontoEngine(e, x); };
@@ -116,6 +118,5 @@ Space engineSpace(xport::Engine e, const Settings& base) {
     }
     return s;
 }
-
 
 }  // namespace st::tune

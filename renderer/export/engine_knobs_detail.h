@@ -36,10 +36,14 @@ const KnobTable& knobTable(Engine e);
 const KnobTable& threejsTable();
 const KnobTable& babylonTable();
 const KnobTable& godotTable();
+const KnobTable& unityTable();
+const KnobTable& unrealTable();
 
 std::vector<PasteText> threejsSnippets(const nlohmann::json& knobs);
 std::vector<PasteText> babylonSnippets(const nlohmann::json& knobs);
 std::vector<PasteText> godotSnippets(const nlohmann::json& knobs);
+std::vector<PasteText> unitySnippets(const nlohmann::json& knobs);   // unity-urp.asset
+std::vector<PasteText> unrealSnippets(const nlohmann::json& knobs);  // unreal-engine.ini, unreal-light.py
 
 nlohmann::json threejsDefaultKnobs();
 Settings threejsModel(const nlohmann::json& knobs, const Settings& view);
@@ -55,4 +59,13 @@ EngineKnobs godotKnobsFor(const Settings& s);
 nlohmann::json babylonDefaultKnobs();
 Settings babylonModel(const nlohmann::json& knobs, const Settings& view);
 EngineKnobs babylonKnobsFor(const Settings& s);
+
+nlohmann::json unityDefaultKnobs();
+Settings unityModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs unityKnobsFor(const Settings& s);
+
+nlohmann::json unrealDefaultKnobs();
+Settings unrealModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs unrealKnobsFor(const Settings& s);
+
 }  // namespace st::xport

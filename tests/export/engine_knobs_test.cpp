@@ -144,7 +144,6 @@ TEST(EngineKnobsTest, WhatGodotLacksIsListedAndItsModesHoldOneTwoOrFourSplits) {
     EXPECT_THROW(engineModel(Engine::Godot, bad, s), std::invalid_argument) << "splits must increase";
     bad = {{"rendering/lights_and_shadows/directional_shadow/soft_shadow_filter_quality", 6}};
     EXPECT_THROW(engineModel(Engine::Godot, bad, s), std::invalid_argument);
-    EXPECT_THROW(defaultKnobs(Engine::Unity), std::invalid_argument) << "no knob table for Unity yet";
     EXPECT_TRUE(runsHere(Engine::ThreeJs));
     EXPECT_FALSE(runsHere(Engine::Godot));
     // The knobs carry their units (a knob renamed in its table without its unit would drop below).
