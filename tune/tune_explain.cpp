@@ -169,6 +169,10 @@ Explanation explain(const Settings& input, const Evaluation& inputEval, const Se
             x.with.emplace_back("cascades.scheme", "manual");
             also = " (with " + also + "the manual scheme)";
         }
+        const std::string fromText = splitsText(input, c.from, unitIn(*f, input)), toText = splitsText(tuned, c.to, unitIn(*f, tuned));
+        // A move below what the line can show (an engine's projection rounding its knob: slope bias
+        // 1.0000005 -> 1.0000008 texels) is no change to an artist.
+        if (fromText == toText) continue;
         // Undoing the splits alone leaves the tuned count's splits computed again: the scheme goes back.
         const Settings without =
             coupled && c.path == "cascades.manualSplits" ? withFieldJson(tuned, "cascades.scheme", changed("cascades.scheme")->from)
@@ -176,8 +180,7 @@ Explanation explain(const Settings& input, const Evaluation& inputEval, const Se
         const Settings alone = withChange(input, x, true);
         x.alone = alone == input ? inputEval : evaluate(alone);
         x.without = without == tuned ? tunedEval : evaluate(without);
-        x.line = std::string(f->label) + " " + splitsText(input, c.from, unitIn(*f, input)) + " -> " +
-                 splitsText(tuned, c.to, unitIn(*f, tuned)) + also + ": alone it " + judged(x.alone, row, inputEval, false) +
+        x.line = std::string(f->label) + " " + fromText + " -> " + toText + also + ": alone it " + judged(x.alone, row, inputEval, false) +
                  "; in the tuned preset it " + judged(x.without, row, tunedEval, true);
         // An artifact class that gets worse with the change, said as a sentence, and the line marked.
         if (x.alone.valid && !x.alone.constraintsMet && !x.alone.violated.empty())
