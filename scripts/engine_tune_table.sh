@@ -7,8 +7,8 @@
 #     tuned.tuned), and the modelled misclassified share on the held-out view, defaults -> tuned;
 #   - for threejs and babylon, the engine itself (summary.json's engine object, engine-check run by
 #     the tune on every view): misclassified with its defaults -> with the tuned knobs on the tuned
-#     views, and the tuned knobs' pixel agreement between engine and model; godot does not run here,
-#     its figures are shadowtune's model of Godot ("model only");
+#     views, and the tuned knobs' pixel agreement between engine and model; the other engines do not
+#     run here, their figures are shadowtune's model of them ("model only");
 #   - the tune's seconds: wall clock of the command (engine-check included) and the search's own
 #     (summary.json's secondsAllRuns);
 #   - "goal": met when the tuned modelled cost is at most the defaults', and the tuned modelled
@@ -23,7 +23,7 @@
 # failed, an <engine>.json "lacks" is not empty or a web engine's summary.json has no engine object
 # (listed on stderr).
 #   scripts/engine_tune_table.sh [OUT]   (default out/engine-tune-table)
-# ENGINES="threejs babylon godot" (default) picks engines, SCENES="yard truck-town ..." scenes (default
+# ENGINES="threejs babylon godot unity unreal bevy filament" (default) picks engines, SCENES="yard truck-town ..." scenes (default
 # the yard and all six); BIN=PATH runs another shadowtune (a copy,
 # so a rebuild cannot swap it mid-table; default build/release/shadowtune, builds nothing);
 # TUNE_TIMEOUT=S (default 600) stops a tune after S seconds (SIGINT, then SIGKILL a minute later) and
@@ -32,7 +32,7 @@
 # ../shared/assets for the six real scenes. One tune at a time: each takes 10-90 s or more.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-engines=${ENGINES:-threejs babylon godot}
+engines=${ENGINES:-threejs babylon godot unity unreal bevy filament}
 out=${1:-${OUT:-$root/out/engine-tune-table}}
 bin=${BIN:-$root/build/release/shadowtune}
 limit=${TUNE_TIMEOUT:-600}
@@ -60,9 +60,10 @@ problems=()
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 echo "load before: $load_before" >&2
 for engine in $engines; do
-  case $engine in threejs|babylon|godot) ;; *) echo "error: unknown engine '$engine' (threejs, babylon, godot)" >&2; exit 2 ;; esac
+  case $engine in threejs|babylon|godot|unity|unreal|bevy|filament) ;;
+    *) echo "error: unknown engine '$engine' (threejs, babylon, godot, unity, unreal, bevy, filament)" >&2; exit 2 ;; esac
   web=0
-  [[ $engine == godot ]] || web=1
+  [[ $engine == threejs || $engine == babylon ]] && web=1
   ref=".references[\"$engine-defaults\"]"
   rows=()
   for entry in "${scenes[@]}"; do
@@ -156,7 +157,7 @@ for engine in $engines; do
   if ((web)); then
     echo "### $engine${version:+ $version}: its own knobs, in the engine"
   else
-    echo "### $engine: its own knobs; Godot does not run here, every figure is shadowtune's model of Godot"
+    echo "### $engine: its own knobs; $engine does not run here, every figure is shadowtune's model of it"
   fi
   echo
   echo "| scene | defaults (modelled): misclassified / soft filtered / cost ms | tuned (modelled) | held-out misclassified (modelled): defaults -> tuned | in the engine: misclassified defaults -> tuned | in the engine: tuned pixel agreement | seconds: wall (search) | goal |"
