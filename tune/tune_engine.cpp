@@ -107,6 +107,8 @@ Space engineSpace(xport::Engine e, const Settings& base) {
         case xport::Engine::Godot: godotDims(s, base); break;
         case xport::Engine::Unity: unityDims(s, base); break;
         case xport::Engine::Unreal: unrealDims(s, base); break;
+        case xport::Engine::Bevy: bevyDims(s, base); break;
+        case xport::Engine::Filament: filamentDims(s, base); break;
         default: throw std::invalid_argument(xport::engineName(e) + " has no tuning space yet");
     }
     s.project = [e](const Settings& x) { return ontoEngine(e, x); };

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace st::ui {
@@ -22,16 +23,20 @@ namespace {
 
 using nlohmann::json;
 
-constexpr xport::Engine kEngines[] = {xport::Engine::ThreeJs, xport::Engine::Babylon, xport::Engine::Godot};
+constexpr xport::Engine kEngines[] = {xport::Engine::ThreeJs, xport::Engine::Babylon, xport::Engine::Godot,
+                                      xport::Engine::Bevy, xport::Engine::Filament};
 const char* const kEngineLabels[] = {"shadowtune (every method)", "three.js r187 (CSM addon)", "Babylon.js 9 (CascadedShadowGenerator)",
-                                     "Godot 4 (DirectionalLight3D)"};
+                                     "Godot 4 (DirectionalLight3D)", "Bevy 0.20 (CascadeShadowConfig)",
+                                     "Filament 1.51 (ShadowOptions)"};
+constexpr int kEngineCount = int(std::size(kEngines));
+static_assert(std::size(kEngineLabels) == std::size(kEngines) + 1, "a label per engine, after shadowtune's");
 
 void drawEngineChoice(UiFrame& f) {
     EngineUiState& st = f.state.engine;
     int current = 0;
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < kEngineCount; ++i)
         if (st.engine == kEngines[i]) current = i + 1;
-    if (ImGui::Combo("Engine", &current, kEngineLabels, 4)) {
+    if (ImGui::Combo("Engine", &current, kEngineLabels, kEngineCount + 1)) {
         st.engine = current == 0 ? std::nullopt : std::optional<xport::Engine>(kEngines[current - 1]);
         st.error.clear();
         st.saved.clear();

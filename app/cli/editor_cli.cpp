@@ -36,7 +36,11 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
     editor->add_option("--engine", *engine,
                        "Open in engine mode: the Settings panel shows this engine's knobs and greys what it lacks; the Tune "
                        "panel tunes in its knobs (" + xport::knobEngineList() + ")")
-        ->check(CLI::IsMember({"threejs", "babylon", "godot"}));
+        ->check(CLI::Validator(
+            [](std::string& name) {  // every engine with a knob table
+                return xport::parseKnobEngine(name) ? std::string() : "'" + name + "' is not one of " + xport::knobEngineList();
+            },
+            "ENGINE"));
     editor->add_flag("--debug-gl", opt->debugContext, "Debug context; GL messages are printed");
     editor->callback([opt, preset, engine, &exitCode] {
         if (!preset->empty()) opt->preset = *preset;

@@ -63,9 +63,13 @@ void addTuneCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--engine", *engine,
                     "Tune for this engine: its own knobs only (" + xport::knobEngineList() +
                     "); writes ENGINE.json (its knobs) and its paste-ready text beside tuned.json")
-        ->check(CLI::IsMember({"threejs", "babylon", "godot"}));
+        ->check(CLI::Validator(
+            [](std::string& name) {  // every engine with a knob table: a new table needs no line here
+                return xport::parseKnobEngine(name) ? std::string() : "'" + name + "' is not one of " + xport::knobEngineList();
+            },
+            "ENGINE"));
     cmd->add_flag("--no-engine-check", opt->noEngineCheck,
-                  "With --engine threejs or babylon: skip running the tuned knobs and the defaults in the real engine "
+                  "With --engine " + xport::loopEngineList() + ": skip running the tuned knobs and the defaults in the real engine "
                   "on the tune's views (summary.json's engine object, explain.md's table)");
     cmd->add_flag("--front", opt->front,
                   "Keep a quarter of the evaluations for a descent to cheaper settings from the tuned point: front/ "

@@ -21,6 +21,8 @@ const KnobTable* tableOf(Engine e) {
         case Engine::ThreeJs: return &threejsTable();
         case Engine::Babylon: return &babylonTable();
         case Engine::Godot: return &godotTable();
+        case Engine::Bevy: return &bevyTable();
+        case Engine::Filament: return &filamentTable();
         case Engine::Unity: return &unityTable();
         case Engine::Unreal: return &unrealTable();
         default: return nullptr;

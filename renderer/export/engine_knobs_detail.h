@@ -38,12 +38,16 @@ const KnobTable& babylonTable();
 const KnobTable& godotTable();
 const KnobTable& unityTable();
 const KnobTable& unrealTable();
+const KnobTable& bevyTable();
+const KnobTable& filamentTable();
 
 std::vector<PasteText> threejsSnippets(const nlohmann::json& knobs);
 std::vector<PasteText> babylonSnippets(const nlohmann::json& knobs);
 std::vector<PasteText> godotSnippets(const nlohmann::json& knobs);
 std::vector<PasteText> unitySnippets(const nlohmann::json& knobs);   // unity-urp.asset
 std::vector<PasteText> unrealSnippets(const nlohmann::json& knobs);  // unreal-engine.ini, unreal-light.py
+std::vector<PasteText> bevySnippets(const nlohmann::json& knobs);      // bevy.rs
+std::vector<PasteText> filamentSnippets(const nlohmann::json& knobs);  // filament.cpp
 
 nlohmann::json threejsDefaultKnobs();
 Settings threejsModel(const nlohmann::json& knobs, const Settings& view);
@@ -68,4 +72,11 @@ nlohmann::json unrealDefaultKnobs();
 Settings unrealModel(const nlohmann::json& knobs, const Settings& view);
 EngineKnobs unrealKnobsFor(const Settings& s);
 
+nlohmann::json bevyDefaultKnobs();
+Settings bevyModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs bevyKnobsFor(const Settings& s);
+
+nlohmann::json filamentDefaultKnobs();
+Settings filamentModel(const nlohmann::json& knobs, const Settings& view);
+EngineKnobs filamentKnobsFor(const Settings& s);
 }  // namespace st::xport

@@ -59,10 +59,14 @@ void addBias(EngineExport& e, const Settings& s, const PresetFacts& f) {
     e.add("DirectionalLight.shadow_normal_bias", round6(b.normalOffset / std::sqrt(2.0)), M::Approximated,
           "bias.normalOffset / sqrt 2 (Bevy multiplies by sqrt 2, then by its texel: ceil(diameter) / size)");
     const FilterKind k = s.filter.kind;
-    e.add("ShadowFilteringMethod", k == FilterKind::PcfNxN ? "Gaussian" : "Hardware2x2",
-          k == FilterKind::Pcf2x2 ? M::Exact : M::Approximated,
-          k == FilterKind::Hard ? "Bevy has no unfiltered test; Hardware2x2 is the nearest"
-                                : "Gaussian: Castano's 9-tap filter, about a 5x5 kernel (Bevy's default)");
+    // Gaussian is Castano's 9 bilinear taps over 5 x 5 texels (shadow_sampling.wesl:101-143): shadowtune's
+    // tent of 5 exactly; Temporal is 8 spiral taps rotated per pixel (:173-205), nearest to the Vogel disc.
+    const bool tent5 = k == FilterKind::Tent && s.filter.size == 5;
+    const char* method = k == FilterKind::Vogel ? "Temporal" : (k == FilterKind::PcfNxN || k == FilterKind::Tent) ? "Gaussian" : "Hardware2x2";
+    e.add("ShadowFilteringMethod", method, k == FilterKind::Pcf2x2 || tent5 ? M::Exact : M::Approximated,
+          k == FilterKind::Hard    ? "Bevy has no unfiltered test; Hardware2x2 is the nearest"
+          : k == FilterKind::Vogel ? "Temporal: 8 spiral taps, rotated per pixel and per frame, f(texel) metres wide"
+                                   : "Gaussian: Castano's 9 bilinear taps over 5x5 texels, shadowtune's pcf-tent 5 (Bevy's default)");
     if (isMomentFilter(k))
         e.add("(" + filterKindText(s) + ")", true, M::NoEquivalent, "Bevy has no moment shadow maps");
     // shadow_sampling.wesl: the blocker search reaches soft_shadow_size x (up to 0.875) metres around the
@@ -85,11 +89,12 @@ EngineExport exportBevy(const Settings& s, const PresetFacts& f) {
     addBias(e, s, f);
     const CascadeSettings& c = s.cascades;
     e.add("(cascade fit)", "diameter-sized box, texel-snapped, depth-clamped",
-          c.fit == FitMode::Sphere && c.stabilize && c.zExtension == ZExtension::Pancake ? M::Approximated
-                                                                                          : M::NoEquivalent,
+          (c.fit == FitMode::Diagonal || c.fit == FitMode::Sphere) && c.stabilize && c.zExtension == ZExtension::Pancake
+              ? M::Approximated
+              : M::NoEquivalent,
           "Bevy always sizes a cascade by its slice's longer diagonal (far face or body) rounded up to whole metres, "
-          "floors its centre to texels and pancakes casters (unclipped depth); shadowtune's sphere is at least as wide "
-          "as that diagonal before Bevy's rounding");
+          "floors its centre to texels and pancakes casters (unclipped depth; cascade.rs:284-299): shadowtune's "
+          "diagonal fit with the centre floored, without the rounding (a sphere is at least as wide)");
     // crates/bevy_pbr/src/contact_shadows.rs: a camera component (linear_steps 16, thickness 0.1, length 0.3
     // by default) and DirectionalLight.contact_shadows_enabled: a screen-space march toward the light.
     if (s.filter.contact != ContactShadows::Off) {

@@ -68,7 +68,7 @@ void addFilter(EngineExport& e, const Settings& s) {
     } else {
         e.add("View::setShadowType", "PCF", k == FilterKind::Hard ? M::NoEquivalent : M::Approximated,
               "PCF (default) samples 16-bit depth maps (DEPTH16; shadowtune's are 32-bit float) with "
-              "ShadowSample_PCF_Low, a 3x3 Gaussian from 4 hardware-compared taps");
+              "ShadowSample_PCF_Low, Castano's 4 bilinear taps over 3x3 texels (shadowtune's pcf-tent 3)");
     }
 }
 
