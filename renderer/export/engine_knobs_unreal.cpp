@@ -13,6 +13,7 @@
 #include "renderer/export/engine_knobs_detail.h"
 #include "renderer/export/export_common.h"
 #include "renderer/export/unreal_splits.h"
+#include "renderer/settings/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,7 +106,7 @@ void unrealCascadeKnobs(json& k, const Settings& s, const PresetFacts& f, std::v
         k["CascadeDistributionExponent"] = round6(std::clamp(fit.exponent, 1.0, 4.0));
         const double offMetres = fit.maxError * (double(f.end) - f.nearPlane);
         if (offMetres > 0.05 || fit.exponent < 1.0 || fit.exponent > 4.0)
-            lacks.push_back("splits off UE's geometric distribution (exponent 1 .. 4) by up to " + std::to_string(offMetres) + " m");
+            lacks.push_back("splits off UE's geometric distribution (exponent 1 .. 4) by up to " + formatNumber(round6(offMetres)) + " m");
     }
     if (!unrealPowerOfTwo(c.mapSize) || c.mapSize < 128 || c.mapSize > 8192)
         lacks.push_back("map size " + std::to_string(c.mapSize) + ": r.Shadow.MaxCSMResolution takes a power of two");

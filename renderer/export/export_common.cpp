@@ -69,6 +69,16 @@ namespace {
 // bias.constantScale / slopeScale / normalOffsetScale: no engine's light or project settings hold a
 // bias per cascade (Godot's shadow_bias grows with each split's depth range by itself, and
 // godotengine/godot #100375 asks for more), so each scaled bias is listed with its values per cascade.
+// Unity URP and Unreal count their depth bias in texels of each cascade: factors equal to the
+// cascades' texel ratios are what they do anyway.
+bool followsTexels(Engine engine, const Settings& s, const std::vector<float>& factors) {
+    if (engine != Engine::Unity && engine != Engine::Unreal) return false;
+    const PresetFacts f = presetFacts(s);
+    for (std::size_t i = 0; i < f.texel.size(); ++i)
+        if (std::abs(cascadeFactor(factors, int(i)) - f.texel[i] / f.texel.front()) > 0.01f) return false;
+    return true;
+}
+
 void addCascadeBias(EngineExport& e, const Settings& s) {
     const BiasSettings& b = s.bias;
     if (!hasCascadeBias(b)) return;
@@ -88,6 +98,14 @@ void addCascadeBias(EngineExport& e, const Settings& s) {
         const auto& list = std::get<std::vector<float>>(factors);
         const bool varies = std::any_of(list.begin(), list.end(), [](float v) { return v != 1.0f; });
         if (!varies || !fieldApplies(s, k.path)) continue;
+        if (k.path == std::string_view("bias.constantScale") && followsTexels(e.engine, s, list)) {
+            std::vector<double> rounded;
+            for (float v : list) rounded.push_back(round6(v));
+            e.add(k.name, numbers(rounded), Mapping::Exact,
+                  "bias.constantScale follows each cascade's texel, as this engine's bias does by itself (it counts in "
+                  "texels of each cascade: engine_knobs_unity.cpp, engine_knobs_unreal.cpp)");
+            continue;
+        }
         std::vector<double> values;
         for (int i = 0; i < s.cascades.count; ++i) values.push_back(round6(k.of(cascadeBias(b, i))));
         e.add(k.name, numbers(values), Mapping::NoEquivalent,

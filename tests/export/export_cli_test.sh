@@ -26,6 +26,16 @@ run export "$presets/default.json" --to unreal --json
 check "--json exits 0" rc 0
 check "--json is JSON with the groups" python3 -c "import json,sys; j=json.load(open('$work/stdout')); sys.exit(0 if j['engine']=='unreal' and all(k in j for k in ('exact','approximated','noEquivalent')) else 1)"
 
+# The knob table's part: the engine's own preset takes its knobs whole, and --paste writes the
+# knobs as --json prints them with the paste-ready text beside them.
+run export "$presets/engines/unity.json" --to unity --json --paste "$work/paste"
+check "--paste exits 0" rc 0
+check "unity's own preset lacks nothing" python3 -c "import json,sys; j=json.load(open('$work/stdout')); sys.exit(0 if j['lacks']==[] and j['knobs']['m_ShadowCascadeCount']==1 else 1)"
+check "--paste writes unity.json with the printed knobs" python3 -c "import json,sys; a=json.load(open('$work/stdout')); b=json.load(open('$work/paste/unity.json')); sys.exit(0 if a['knobs']==b['knobs'] else 1)"
+check "--paste writes the asset's lines" grep -q '^  m_ShadowDistance: 50' "$work/paste/unity-urp.asset"
+run export "$presets/default.json" --to unreal
+check "what unreal lacks of the yard is listed" out_has "a constant bias per cascade other than its texel"
+
 run export "$presets/default.json" --to cryengine
 check "unknown engine exits 2" rc 2
 check "unknown engine lists the valid ones" err_has "unknown engine 'cryengine'; expected one of: godot, unity, unreal, bevy, threejs, filament, babylon"
