@@ -112,7 +112,8 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     if (depthClamp && !c.pancakeToCasters) out.lacks.push_back("a pancake over the whole slice: Babylon cuts it to the casters' bounds");
     if (c.zExtension == ZExtension::Distance || c.zExtension == ZExtension::None)
         out.lacks.push_back("z extension '" + enumName(c.zExtension) + "': Babylon pancakes or reaches the casters' bounds");
-    k["cascadeBlendPercentage"] = round6(c.blendBand);
+    k["cascadeBlendPercentage"] = round6(std::min(c.blendBand, 0.5f));  // the setter's range
+    if (c.blendBand > 0.5f) out.lacks.push_back("a blend band above half a slice (cascadeBlendPercentage 0.5)");
     if (c.casterFaces != CasterFaces::Front) out.lacks.push_back("caster faces '" + enumName(c.casterFaces) + "': Babylon casts sun-facing faces");
     const double factor = depthClamp ? 1.5 : 0.5;
     if (s.bias.constantUnit == BiasUnit::Depth) k["bias"] = round6(double(s.bias.constant) / factor);

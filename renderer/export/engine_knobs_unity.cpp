@@ -157,7 +157,10 @@ void unityCascadeKnobs(json& k, const Settings& s, const PresetFacts& f, std::ve
 void unityBiasKnobs(json& k, const Settings& s, const PresetFacts& f, float radius, std::vector<std::string>& lacks) {
     const BiasSettings& b = s.bias;
     if (b.constantUnit != BiasUnit::Metres) lacks.push_back("a bias in the box's depth: URP's is in texels of each cascade");
-    k["m_ShadowDepthBias"] = round6(std::max(0.0f, b.constant) / (radius * f.texel.front()));
+    // Within the inspector's 0 .. 10, so the knobs always load; beyond is listed.
+    const double depth = std::max(0.0f, b.constant) / (radius * f.texel.front());
+    if (depth > 10.0) lacks.push_back("a depth bias above 10 texels");
+    k["m_ShadowDepthBias"] = round6(std::min(10.0, depth));
     if (b.constant < 0.0f) lacks.push_back("a bias away from the light");
     for (std::size_t i = 1; i < f.texel.size() && b.constant > 0.0f; ++i)
         if (std::abs(cascadeFactor(b.constantScale, int(i)) - f.texel[i] / f.texel.front()) > 0.01f) {
@@ -165,7 +168,8 @@ void unityBiasKnobs(json& k, const Settings& s, const PresetFacts& f, float radi
             break;
         }
     if (std::abs(b.slope - kUnityRasterSlopeBias) > 0.01f) lacks.push_back("a slope bias other than URP's fixed raster bias 2.5");
-    if (b.normalOffsetUnit == OffsetUnit::Texels) k["m_ShadowNormalBias"] = round6(b.normalOffset / radius);
+    if (b.normalOffset / radius > 10.0f) lacks.push_back("a normal bias above 10 texels");
+    if (b.normalOffsetUnit == OffsetUnit::Texels) k["m_ShadowNormalBias"] = round6(std::clamp(b.normalOffset / radius, 0.0f, 10.0f));
     else lacks.push_back("normal offset in metres: URP's normal bias is in texels");
     if (!b.slopeScale.empty() || !b.normalOffsetScale.empty()) lacks.push_back("slope or normal bias per cascade");
     if (b.receiverPlane) lacks.push_back("receiver-plane bias");

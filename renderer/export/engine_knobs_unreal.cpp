@@ -102,10 +102,15 @@ void unrealCascadeKnobs(json& k, const Settings& s, const PresetFacts& f, std::v
     k["DynamicShadowCascades"] = c.count;
     k["DynamicShadowDistanceMovableLight"] = round6(double(f.end) * 100.0);
     if (c.count > 1) {
-        const ExponentFit fit = fitDistributionExponent(fractionsOfRange(f), c.count);
-        k["CascadeDistributionExponent"] = round6(std::clamp(fit.exponent, 1.0, 4.0));
-        const double offMetres = fit.maxError * (double(f.end) - f.nearPlane);
-        if (offMetres > 0.05 || fit.exponent < 1.0 || fit.exponent > 4.0)
+        // The exponent within the property's clamp, and how far its splits lie from the preset's.
+        const std::vector<double> fr = fractionsOfRange(f);
+        const double exponent = round6(std::clamp(fitDistributionExponent(fr, c.count).exponent, 1.0, 4.0));
+        k["CascadeDistributionExponent"] = exponent;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < fr.size(); ++i)
+            worst = std::max(worst, std::abs(fr[i] - accumulatedScale(exponent, int(i) + 1, c.count)));
+        const double offMetres = worst * (double(f.end) - f.nearPlane);
+        if (offMetres > 0.05)
             lacks.push_back("splits off UE's geometric distribution (exponent 1 .. 4) by up to " + formatNumber(round6(offMetres)) + " m");
     }
     if (!unrealPowerOfTwo(c.mapSize) || c.mapSize < 128 || c.mapSize > 8192)
@@ -130,7 +135,9 @@ int unrealQualityOf(const FilterSettings& f, std::vector<std::string>& lacks) {
 void unrealBiasKnobs(json& k, const Settings& s, const PresetFacts& f, std::vector<std::string>& lacks) {
     const BiasSettings& b = s.bias;
     if (b.constantUnit != BiasUnit::Metres) lacks.push_back("a bias in the box's depth: UE's is in texels of each cascade");
-    const double shadowBias = std::max(0.0f, b.constant) / (kUnrealDepthTexelsPerBias * f.texel.front());
+    // Within the properties' clamps (0 .. 10), so the knobs always load; beyond is listed.
+    const double shadowBias = std::min(10.0, std::max(0.0f, b.constant) / (kUnrealDepthTexelsPerBias * f.texel.front()));
+    if (b.constant > kUnrealDepthTexelsPerBias * 10.0 * f.texel.front()) lacks.push_back("a depth bias above ShadowBias 10");
     k["ShadowBias"] = round6(shadowBias);
     if (b.constant < 0.0f) lacks.push_back("a bias away from the light");
     for (std::size_t i = 1; i < f.texel.size() && b.constant > 0.0f; ++i)
@@ -138,7 +145,9 @@ void unrealBiasKnobs(json& k, const Settings& s, const PresetFacts& f, std::vect
             lacks.push_back("a constant bias per cascade other than its texel: UE's bias is in each cascade's texels");
             break;
         }
-    if (shadowBias > 0.0) k["ShadowSlopeBias"] = round6(b.slope / (kUnrealSlopeTexelsPerBias * shadowBias));
+    const double slopeBias = shadowBias > 0.0 ? b.slope / (kUnrealSlopeTexelsPerBias * shadowBias) : 0.0;
+    if (slopeBias > 10.0) lacks.push_back("a slope bias above ShadowSlopeBias 10 x ShadowBias");
+    if (shadowBias > 0.0) k["ShadowSlopeBias"] = round6(std::min(10.0, slopeBias));
     else if (b.slope > 0.0f) lacks.push_back("a slope bias without a depth bias: UE's slope bias is a multiple of ShadowBias");
     if (b.normalOffset > 0.0f) lacks.push_back("normal offset: UE's CSM has none");
     if (!b.slopeScale.empty() || !b.normalOffsetScale.empty()) lacks.push_back("slope or normal bias per cascade");

@@ -157,5 +157,24 @@ TEST(EngineKnobsTest, WhatGodotLacksIsListedAndItsModesHoldOneTwoOrFourSplits) {
     EXPECT_EQ(knobUnit(Engine::ThreeJs, "normalBias"), "m");
 }
 
+// Whatever the settings, the knobs an engine's table gives for them load back in its model: a tuner
+// projecting onto the engine must never get knobs the engine refuses (they would leave the point
+// unprojected). Extremes each table has to clamp, with what it lacks listed instead.
+TEST(EngineKnobsTest, TheKnobsForAnySettingsLoadInTheModel) {
+    Settings wild = yard();
+    wild.cascades.count = 8;
+    wild.cascades.scheme = SplitScheme::Manual;
+    wild.cascades.manualSplits = {0.5f, 1.0f, 2.0f, 300.0f, 301.0f, 302.0f, 303.0f};
+    wild.bias.constant = 0.0001f;
+    wild.bias.slope = 10.0f;
+    wild.bias.normalOffset = 9.0f;
+    wild.cascades.blendBand = 0.9f;
+    for (Engine e : tabledEngines()) {
+        const EngineKnobs k = knobsFor(e, wild);
+        EXPECT_FALSE(k.lacks.empty()) << engineName(e);
+        EXPECT_NO_THROW(engineModel(e, k.knobs, wild)) << engineName(e) << " " << k.knobs.dump();
+    }
+}
+
 }  // namespace
 }  // namespace st::xport
