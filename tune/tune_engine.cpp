@@ -121,4 +121,5 @@ Space engineSpace(xport::Engine e, const Settings& base) {
     return s;
 }
 
+
 }  // namespace st::tune

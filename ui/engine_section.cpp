@@ -24,9 +24,11 @@ namespace {
 using nlohmann::json;
 
 constexpr xport::Engine kEngines[] = {xport::Engine::ThreeJs, xport::Engine::Babylon, xport::Engine::Godot,
-                                      xport::Engine::Bevy, xport::Engine::Filament};
+                                      xport::Engine::Unity,   xport::Engine::Unreal,  xport::Engine::Bevy,
+                                      xport::Engine::Filament};
 const char* const kEngineLabels[] = {"shadowtune (every method)", "three.js r187 (CSM addon)", "Babylon.js 9 (CascadedShadowGenerator)",
-                                     "Godot 4 (DirectionalLight3D)", "Bevy 0.20 (CascadeShadowConfig)",
+                                     "Godot 4 (DirectionalLight3D)", "Unity URP (pipeline asset)",
+                                     "Unreal 5 (DirectionalLight CSM)", "Bevy 0.20 (CascadeShadowConfig)",
                                      "Filament 1.51 (ShadowOptions)"};
 constexpr int kEngineCount = int(std::size(kEngines));
 static_assert(std::size(kEngineLabels) == std::size(kEngines) + 1, "a label per engine, after shadowtune's");
@@ -45,8 +47,9 @@ void drawEngineChoice(UiFrame& f) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The engine you ship in: its knobs below, the settings it has no knob for greyed,\n"
                           "and the Tune panel tunes in its knobs only. %s",
-                          st.engine && !xport::runsHere(*st.engine) ? "Godot's model is a reading of its source, not measured here."
-                                                                     : "three.js and Babylon.js are measured here (engine-check).");
+                          st.engine && !xport::runsHere(*st.engine)
+                              ? "This engine does not run here: its model is a reading of its source, not measured."
+                              : "three.js and Babylon.js are measured here (engine-check).");
 }
 
 // One knob: a checkbox for a bool, else its JSON text (a bare word is taken as a string).
@@ -177,5 +180,7 @@ void drawEngineSection(UiFrame& f) {
     ImGui::TextDisabled("To paste into your project:");
     drawPasteText(f, e, k);
 }
+
+std::vector<xport::Engine> engineChoices() { return {std::begin(kEngines), std::end(kEngines)}; }
 
 }  // namespace st::ui

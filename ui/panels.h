@@ -4,6 +4,7 @@
 #include "ui/ui_state.h"
 
 #include <string_view>
+#include <vector>
 
 namespace st::ui {
 
@@ -11,6 +12,7 @@ void drawMenuBar(UiFrame& f);         // menu_bar.cpp: File / Edit / View
 void handleShortcuts(UiFrame& f);     // shortcuts.cpp: Ctrl+Z, Ctrl+Shift+Z, Ctrl+S, F, Tab, F1
 void drawSettingsPanel(UiFrame& f);   // settings_panel.cpp: every field, grouped, with issues
 void drawEngineSection(UiFrame& f);   // engine_section.cpp: Engine choice, its knobs, lacks, paste-ready text
+std::vector<xport::Engine> engineChoices();  // engine_section.cpp: the engines the Engine choice offers
 // engine_section.cpp: whether the chosen engine has no knob for the field at `path` (greyed then).
 bool engineLacksField(const UiFrame& f, std::string_view path);
 void drawPresetsPanel(UiFrame& f);    // presets_panel.cpp: list, save, save as, undo, messages

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# `tune --engine bevy|filament` (issue "Tune for your engine"), on the yard at 160x90 with a short
-# search. Neither engine runs here, so the figures are the model's (docs/engines.md "Bevy",
-# "Filament"); the test holds:
+# `tune --engine bevy|filament|unity|unreal` (issue "Tune for your engine"), on the yard at 160x90
+# with a short search. None of them runs here, so the figures are the model's (docs/engines.md
+# "Bevy", "Filament", "Unity URP", "Unreal Engine 5"); the test holds:
 #   - the budget is the engine defaults' modelled cost (a reference named ENGINE-defaults);
 #   - the tune never emits a setting the engine lacks (ENGINE.json "lacks" is empty);
 #   - summary.json claims no figures measured in the engine (engine null);
 #   - the paste-ready text parses back, by a reader of the engine's own syntax written here (Rust
-#     struct literals `name: value,` in bevy.rs; `options.name = value;` in filament.cpp), to
-#     exactly the knobs of ENGINE.json.
+#     struct literals `name: value,` in bevy.rs; `options.name = value;` in filament.cpp; the asset's
+#     `  m_Name: value` YAML lines in unity-urp.asset; `r.X=value` cvars in unreal-engine.ini and
+#     `set_editor_property('snake_name', value)` in unreal-light.py), to exactly the knobs of ENGINE.json.
 # Usage: tune_model_engine_test.sh ENGINE SHADOWTUNE SOURCE_DIR WORK_DIR
 set -euo pipefail
 engine=$1
@@ -23,6 +24,8 @@ fail() {
 case $engine in
   bevy) text=bevy.rs ;;
   filament) text=filament.cpp ;;
+  unity) text=unity-urp.asset ;;
+  unreal) text=unreal-light.py ;;
   *) fail "no reader for $engine" ;;
 esac
 out=$work/tune
@@ -41,6 +44,18 @@ if [[ $engine == bevy ]]; then
     sed -nE 's/^ *bounds: vec!\[([-0-9.eE+, ]*)\],$/"bounds": [\1],/p' "$out/$text"
     sed -nE 's/.*ShadowFilteringMethod::([A-Za-z0-9]+)\).*/"shadow_filtering_method": "\1",/p' "$out/$text"
   } >"$work/fields"
+elif [[ $engine == unity ]]; then
+  # the asset's YAML lines: `  m_Name: 1.5`, vectors as {x: a, y: b, z: c}
+  sed -nE 's/^  (m_[A-Za-z0-9]+): ([-0-9.eE+]+)$/"\1": \2,/p; s/^  (m_[A-Za-z0-9]+): \{(.*)\}$/"\1": [\2],/p' "$out/$text" |
+    sed -E 's/[xyzw]: //g' >"$work/fields"
+elif [[ $engine == unreal ]]; then
+  # [SystemSettings] cvars `r.X=5`, and set_editor_property('snake_name', value) back in UE's CamelCase
+  sed -nE 's/^(r\.[A-Za-z.]+)=([-0-9.eE+]+)$/"\1": \2,/p' "$out/unreal-engine.ini" | grep -v Virtual >"$work/fields"
+  sed -nE "s/.*set_editor_property\('([a-z_]+)', ([-0-9.eE+]+)\)$/\1 \2/p" "$out/$text" |
+    while read -r name value; do
+      camel=$(echo "$name" | sed -E 's/(^|_)([a-z])/\U\2/g')
+      echo "\"$camel\": $value,"
+    done >>"$work/fields"
 else
   {
     sed -nE 's/^options\.([A-Za-z]+) = ([-0-9.eE+]+)f?;$/"\1": \2,/p; s/^options\.([A-Za-z]+) = (true|false);$/"\1": \2,/p' "$out/$text"

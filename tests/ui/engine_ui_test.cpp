@@ -6,9 +6,12 @@
 #include "renderer/export/engine_knobs.h"
 #include "renderer/export/engine_snippets.h"
 #include "tests/ui/ui_driver.h"
+#include "ui/panels.h"
 #include "tests/ui/ui_test_data.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace st;
 using namespace st::test;
@@ -77,4 +80,14 @@ TEST_F(EngineUiTest, CopyPutsThePasteReadyTextOnTheClipboardAndGoTunesForTheEngi
     d.click("tune.go");
     ASSERT_TRUE(d.last.tuneStart.has_value());
     EXPECT_EQ(d.last.tuneStart->engine, "babylon");
+}
+
+// Every engine with a knob table can be chosen in the editor (a table added without its line in the
+// Engine choice would be reachable from the command line only).
+TEST(EngineChoiceTest, OffersEveryEngineWithAKnobTable) {
+    const std::vector<xport::Engine> offered = ui::engineChoices();
+    for (std::size_t i = 0; i < xport::kEngineNames.size(); ++i) {
+        const auto e = xport::Engine(i);
+        EXPECT_EQ(std::count(offered.begin(), offered.end(), e), xport::hasKnobTable(e) ? 1 : 0) << xport::engineName(e);
+    }
 }
