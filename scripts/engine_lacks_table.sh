@@ -11,6 +11,8 @@
 #   receiver-plane  a receiver-plane bias                        .bias.receiverPlane = true
 #   back-faces      back faces casting (babylon only: it draws front faces; three.js has shadowSide,
 #                   Godot back faces through reverse cull)       .cascades.casterFaces = "back"
+#   blend           blending between cascades (unity only)       .cascades.blendBand = 0.1
+# (normal-texels also for unreal, whose CSM has no normal offset at all.)
 # The tuned preset and its variants are measured together with `shadowtune measure --no-flicker
 # --frames 1` on the preset's own camera view only (the first of the tune's tuned views), at the
 # preset's output size; the figures are shadowtune's (for three.js and Babylon.js its model of the
@@ -25,11 +27,11 @@
 # A folder without tuned.json, or whose measure fails, gives a row saying why and the table goes on;
 # exit 1 at the end when any did (listed on stderr).
 #   scripts/engine_lacks_table.sh [IN]   (default out/engine-tune-table)
-# ENGINES="threejs babylon godot" and SCENES="yard truck-town ..." pick rows; BIN=PATH runs another
+# ENGINES="threejs babylon godot unity unreal bevy filament" and SCENES="yard truck-town ..." pick rows; BIN=PATH runs another
 # shadowtune (default build/release/shadowtune; builds nothing). Needs jq and ../shared/assets.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-engines=${ENGINES:-threejs babylon godot}
+engines=${ENGINES:-threejs babylon godot unity unreal bevy filament}
 scenes=${SCENES:-yard truck-town dutch-ship fox living-room palm-tree-island zdm2-sauerbraten}
 in=${1:-${IN:-$root/out/engine-tune-table}}
 bin=${BIN:-$root/build/release/shadowtune}
@@ -52,6 +54,8 @@ features_of() {
   echo 'slope-bias|slope-scaled bias (1 texel)|.bias.slope = 1.0'
   case $1 in
     threejs|babylon) echo 'normal-texels|normal offset in texels (0.5)|.bias.normalOffsetUnit = "texels" | .bias.normalOffset = 0.5' ;;
+    unreal) echo 'normal-texels|normal offset (0.5 texels)|.bias.normalOffsetUnit = "texels" | .bias.normalOffset = 0.5' ;;
+    unity) echo 'blend|blending between cascades (0.1 of a cascade)|.cascades.blendBand = 0.1' ;;
   esac
   echo 'receiver-plane|receiver-plane bias|.bias.receiverPlane = true'
   case $1 in
