@@ -4,6 +4,7 @@
 #include "renderer/settings/enum_names.h"
 #include "ui/field_rules.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -37,7 +38,7 @@ std::optional<double> modelledMsPerTexel(const FrameStats& stats, const CascadeS
     return stats.modelShadowMs / texels;
 }
 
-MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel, bool modelled) {
+MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel, bool modelled, std::optional<FrameBase> base) {
     MapCost cost;
     cost.modelled = modelled && msPerTexel.has_value();
     try {
@@ -45,9 +46,16 @@ MapCost mapCost(const CascadeSettings& c, std::optional<double> msPerTexel, bool
     } catch (const std::invalid_argument&) {
         // e.g. array storage with different sizes: validation names the reason, nothing is allocated
     }
-    if (msPerTexel) cost.redrawMs = *msPerTexel * cascadeTexels(c);
+    if (!msPerTexel) return cost;
+    const double texels = cascadeTexels(c);
+    cost.redrawMs = *msPerTexel * texels;
+    // Never below the shadow pass alone: a base frame whose maps were kept timed less than a redraw.
+    if (base) cost.frameMs = std::max(*cost.redrawMs, base->wallMs + *msPerTexel * (texels - base->texels));
+    cost.firstFrameMs = firstFrameMs(cost.frameMs.value_or(*cost.redrawMs), texels);
     return cost;
 }
+
+double firstFrameMs(double redrawMs, double newTexels) { return redrawMs + newTexels * kFirstFrameNsPerTexel * 1e-6; }
 
 bool asksFirst(const MapCost& before, const MapCost& after) {
     const bool bytes = after.bytes && *after.bytes > kAskAboveShadowBytes && *after.bytes > before.bytes.value_or(0);
@@ -81,8 +89,13 @@ std::string durationText(double ms) {
 std::string costQuestion(const CascadeSettings& c, const MapCost& cost) {
     std::string q = mapsText(c) + ":";
     if (cost.bytes) q += " " + formatBytes(*cost.bytes) + " of shadow maps";
-    if (cost.redrawMs) q += std::string(cost.bytes ? "," : "") + " about " + durationText(*cost.redrawMs) +
-                            (cost.modelled ? " per redraw (modelled: no shadow pass timed yet)" : " per redraw on this machine");
+    if (cost.redrawMs) {
+        q += cost.bytes ? ";" : "";
+        // The first frame also makes the maps (issue 39 #7): said apart, so a long first frame is expected.
+        if (cost.firstFrameMs) q += " the first frame about " + durationText(*cost.firstFrameMs) + " while the maps are made, then";
+        q += " about " + durationText(cost.frameMs.value_or(*cost.redrawMs)) +
+             (cost.modelled ? " a redraw (modelled: no shadow pass timed yet)" : " a redraw on this machine");
+    }
     return q + ". Apply?";
 }
 

@@ -35,13 +35,24 @@ std::optional<double> msPerTexel(UiFrame& f, const CascadeSettings& rendered) {
     return ask.msPerTexel;
 }
 
+// The last full-quality frame (not an interactive preview; the held image keeps its time): the
+// whole-frame redraw is scaled from it.
+std::optional<FrameBase> frameBase(UiFrame& f, const CascadeSettings& rendered) {
+    MapCostAsk& ask = f.state.mapAsk;
+    const SceneRenderFigures& scene = f.in.scene;
+    if (scene.ms > 0.0 && scene.scale >= 1.0 && scene.mapSize == 0)
+        ask.base = FrameBase{scene.ms, cascadeTexels(rendered)};
+    return ask.base;
+}
+
 }  // namespace
 
 bool holdExpensiveEdit(UiFrame& f, const FieldInfo& field, const Settings& before) {
     if (!affectsMapCost(field.path)) return false;
     const std::optional<double> rate = msPerTexel(f, before.cascades);
-    const MapCost after = mapCost(f.s.cascades, rate, f.state.mapAsk.modelled);
-    if (!asksFirst(mapCost(before.cascades, rate, f.state.mapAsk.modelled), after)) return false;
+    const std::optional<FrameBase> base = frameBase(f, before.cascades);
+    const MapCost after = mapCost(f.s.cascades, rate, f.state.mapAsk.modelled, base);
+    if (!asksFirst(mapCost(before.cascades, rate, f.state.mapAsk.modelled, base), after)) return false;
     f.state.mapAsk.field = &field;
     f.state.mapAsk.value = field.get(f.s);
     f.state.mapAsk.question = costQuestion(f.s.cascades, after);
