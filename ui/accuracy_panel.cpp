@@ -162,18 +162,14 @@ void stateLine(UiFrame& f) {
 }
 
 void overlayToggle(UiFrame& f) {
-    ImGui::Checkbox("Error overlay", &f.state.errorOverlay);
+    ImGui::Checkbox(kErrorOverlayLabel, &f.state.errorOverlay);
     recordItem(f.state.rects, "accuracy.overlay");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kErrorOverlayTooltip);
+    // The key beside the toggle, in the overlay's own colours, so the words and hues are learnt together.
     ImGui::SameLine();
-    ImGui::TextColored(kFalseShadowColour, "false shadow");
+    ImGui::TextColored(kFalseShadowColour, "magenta: false shadow");
     ImGui::SameLine();
-    ImGui::TextColored(kFalseLightColour, "false light");
-    ImGui::SameLine();
-    ImGui::TextDisabled("(?)");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Lighter: within the edge band (what the map's resolution explains).\n"
-                          "Saturated, with a translucent ring: gross (acne, leaks, peter-panning, missing casters).\n"
-                          "Shown over the main view only, and only while it is the frame that was measured.");
+    ImGui::TextColored(kFalseLightColour, "cyan: false light");
 }
 
 }  // namespace

@@ -8,6 +8,16 @@
 
 namespace st::ui {
 
+// The Accuracy panel's overlay toggle (off by default, issue 39 #3): its label and tooltip say what
+// the overlay's colours mean, so it is found and read without the docs.
+inline constexpr const char* kErrorOverlayLabel = "Show errors on the scene";
+inline constexpr const char* kErrorOverlayTooltip =
+    "Paints the measured errors over the shaded view (off by default).\n"
+    "Magenta: false shadow, the map shadows what the sun lights (acne, shadows too wide).\n"
+    "Cyan: false light, the map lights what is in shadow (leaks, peter-panning, missing casters).\n"
+    "Pale: within the edge band (what the map's resolution explains); saturated with a ring: gross.\n"
+    "Shown over the main view only, and only while it is the frame that was measured.";
+
 // Pixel counts of one group of pixels (the frame, one cascade, or beyond the shadow range).
 struct AccuracyCounts {
     std::size_t receivers = 0;  // sun-facing pixels: the denominator of every share

@@ -133,6 +133,8 @@ void EditorUi::setEngine(std::optional<xport::Engine> engine) { state_->engine =
 
 std::optional<xport::Engine> EditorUi::engine() const { return state_->engine.engine; }
 
+void EditorUi::setErrorOverlay(bool on) { state_->errorOverlay = on; }
+
 std::string EditorUi::windowTitle() const { return documentTitle(state_->doc, state_->dirty); }
 
 const std::filesystem::path& EditorUi::presetFile() const { return state_->doc.file; }

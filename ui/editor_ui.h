@@ -22,6 +22,7 @@
 #include "ui/compare_view.h"
 #include "ui/item_rects.h"
 #include "ui/layout.h"
+#include "ui/memory_view.h"
 #include "ui/probe.h"
 #include "ui/split_bar.h"
 #include "ui/status_bar.h"
@@ -90,6 +91,7 @@ struct UiInputs {
     const TuneView* tune = nullptr;          // the Tune panel's run; nullptr: none yet
     std::vector<std::pair<std::string, std::string>> tuneObjectives;  // `tune --objective` choices: name, label
     MotionView motion;
+    MemoryView memory;                       // where the memory goes: the Help window's Memory table
 };
 
 // What the app should do after this frame. Default: nothing.
@@ -178,6 +180,8 @@ public:
     // lacks greyed, the Tune panel tuning in its knobs. nullopt: every method (the default).
     void setEngine(std::optional<xport::Engine> engine);
     std::optional<xport::Engine> engine() const;
+    // The Accuracy panel's error overlay toggle (off by default; `editor --error-overlay` starts with it on).
+    void setErrorOverlay(bool on);
     std::string windowTitle() const;                   // "shadowtune - default.json *"
     const std::filesystem::path& presetFile() const;   // empty: untitled
     const std::vector<std::string>& errors() const;    // of the last failed load/save (shown in the UI)

@@ -1,4 +1,5 @@
 // The help window (F1): every shortcut of the editor, the app's camera keys included.
+#include "ui/field_rules.h"
 #include "ui/layout.h"
 #include "ui/panels.h"
 
@@ -45,6 +46,33 @@ void drawTable() {
     ImGui::EndTable();
 }
 
+// Issue 39 #10: where the memory goes, each GL object's bytes from its size and format; the rest
+// of the resident set is the CPU side (the scene's copy, the ray caster's BVH, the driver).
+void drawMemory(UiFrame& f) {
+    const MemoryView& m = f.in.memory;
+    if (m.lines.empty() || !ImGui::CollapsingHeader("Memory")) return;
+    recordItem(f.state.rects, "help.memory");
+    if (ImGui::BeginTable("memory", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        auto row = [](const std::string& what, const std::string& shape, const std::string& size) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(what.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", shape.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(size.c_str());
+        };
+        for (const MemoryLine& l : m.lines) row(l.what, l.shape, formatBytes(l.bytes));
+        row("Textures and buffers", "", formatBytes(m.total()));
+        if (m.residentBytes > 0) {
+            row("Process resident", "", formatBytes(m.residentBytes));
+            if (m.residentBytes > m.total())
+                row("The rest", "scene copy, ray caster's BVH, driver, UI", formatBytes(m.residentBytes - m.total()));
+        }
+        ImGui::EndTable();
+    }
+}
+
 }  // namespace
 
 void drawHelpWindow(UiFrame& f) {
@@ -59,6 +87,7 @@ void drawHelpWindow(UiFrame& f) {
                            "Camera keys work when no panel has the mouse or keyboard.");
         ImGui::PopTextWrapPos();
         recordItem(f.state.rects, "help");
+        drawMemory(f);
     }
     ImGui::End();
 }

@@ -46,7 +46,9 @@ struct UiState {
     bool showHelp = false;
     ImVec2 probeTooltipSize{0.0f, 0.0f};  // as last drawn: where it goes is decided before it is drawn
     bool showAccuracy = true;              // the Accuracy panel; closed, no ground truth is computed
-    bool errorOverlay = true;              // its error overlay over the scene view
+    // Its error overlay over the scene view. Off until the panel's toggle (issue 39 #3): drawn by
+    // default it covered the scene with colours a new user took for part of the picture.
+    bool errorOverlay = false;
     int zoomLayer = -1;                    // cascade shown in the zoom window; -1: closed
 
     std::string saveAsText;                // the "Save as" path field

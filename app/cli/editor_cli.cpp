@@ -33,6 +33,8 @@ void addEditorCommand(CLI::App& cli, int& exitCode) {
                        "(waiting for input, drawing nothing)");
     editor->add_flag("--wait-accuracy", opt->waitAccuracy,
                      "With --frames: keep drawing until the Accuracy panel shows its figures, then print them");
+    editor->add_flag("--error-overlay", opt->errorOverlay,
+                     "Start with the Accuracy panel's error overlay on (magenta false shadow, cyan false light; off by default)");
     editor->add_option("--engine", *engine,
                        "Open in engine mode: the Settings panel shows this engine's knobs and greys what it lacks; the Tune "
                        "panel tunes in its knobs (" + xport::knobEngineList() + ")")

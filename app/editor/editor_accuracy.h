@@ -39,6 +39,12 @@ public:
     std::string summary() const;  // one line: state and the frame's figures
     // Per pixel of the frame measured (the hover probe's truth); nullptr unless done.
     const std::vector<metrics::PixelClass>* classes() const { return done() ? &classes_ : nullptr; }
+    // Its measurement pass, which the probe shares (the same frame's surfaces, kept once), and the
+    // overlay's size: for the memory breakdown.
+    MeasurePass& measurePass() { return pass_; }
+    const MeasurePass& measurePass() const { return pass_; }
+    int overlayWidth() const { return overlay_.width(); }
+    int overlayHeight() const { return overlay_.height(); }
 
 private:
     void start(Renderer& r, const Settings& s, const std::shared_ptr<const Scene>& scene);

@@ -21,9 +21,17 @@ constexpr std::chrono::minutes kAccuracyTimeout{10};  // a scripted run must end
 void writeStatus(const std::filesystem::path& file, const EditorWindow& window, const EditorSession& session, bool idle) {
     nlohmann::json j{{"pid", ::getpid()}, {"frames", session.framesDrawn()}, {"idle", idle},
                            {"accuracy", session.accuracy().summary()}, {"split", session.splitShown()},
+                           {"swapped", session.swapped()},
                            {"title", window.title()}, {"message", session.message()}};
     const CameraSettings& c = session.camera();
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}}};
+    // The last scene renders (wall ms, scale): a change's first frame against the ones after it.
+    j["renders"] = nlohmann::json::array();
+    for (const auto& [ms, scale] : session.frameTimes().lastRenders(8)) j["renders"].push_back({{"ms", ms}, {"scale", scale}});
+    // Where the memory goes (the Help window's Memory table): bytes by kind and the resident set.
+    const ui::MemoryView memory = session.memory();
+    j["memory"] = {{"resident", memory.residentBytes}, {"objects", memory.total()}, {"lines", nlohmann::json::object()}};
+    for (const ui::MemoryLine& l : memory.lines) j["memory"]["lines"][l.what] = l.bytes;
     writeTextAtomic(file, j.dump() + "\n");
 }
 

@@ -24,6 +24,7 @@ struct EditorOptions {
     std::optional<std::filesystem::path> statusFile;
     bool previewPath = false;   // View > Preview path on the first frame; with frames, run until it plays
     bool waitAccuracy = false;  // with frames: the last frame waits for the Accuracy panel's figures
+    bool errorOverlay = false;  // the Accuracy panel's error overlay on from the start (scripted screenshots)
     bool debugContext = false;
     std::optional<xport::Engine> engine;  // --engine: the Engine section's choice at start
 };

@@ -22,6 +22,7 @@ EditorSession::EditorSession(EditorWindow& window, const EditorOptions& opt)
     const fs::path layout = window_.configDir() / "layout.json";
     model_->ui().setLayoutPrefs(fs::exists(layout) ? loadLayoutPrefs(layout) : ui::scaledDefaults(window_.uiScale()));
     model_->ui().setEngine(opt.engine);
+    model_->ui().setErrorOverlay(opt.errorOverlay);
 }
 
 EditorSession::~EditorSession() { saveLayoutPrefs(window_.configDir() / "layout.json", model_->ui().layoutPrefs()); }

@@ -35,9 +35,12 @@ public:
     // What the last frame saw, for the FramePacer: events, changes, animation, jobs.
     const FrameActivity& activity() const { return activity_; }
     int framesDrawn() const { return times_.frames(); }
+    const FrameTimes& frameTimes() const { return times_; }
     const CameraSettings& camera() const { return model_->settings().camera; }
     std::string message() const { return model_->message(); }  // the status lines the panels show
     bool splitShown() const { return model_->splitShown(); }
+    bool swapped() const { return model_->swapped(); }  // Tab: the side view fills the scene viewport
+    ui::MemoryView memory() const { return viewport_->memory(); }
     // --preview-path: the preview has not started yet (it starts on the second frame) or still renders.
     bool previewPending() const {
         return opt_.previewPath && (times_.frames() < 2 || model_->preview().state() == MotionPreview::State::Rendering);

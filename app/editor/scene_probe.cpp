@@ -62,10 +62,10 @@ ui::ProbeView readProbe(const MeasureSamples& m, int x, int y, const Settings& s
     return p;
 }
 
-void SceneProbe::update(bool wanted, const Renderer& r, const Settings& s) {
+void SceneProbe::update(bool wanted, const Renderer& r, const Settings& s, MeasurePass* shared) {
     if (!wanted || (held_ && *held_ == s)) return;
-    if (!pass_) pass_.emplace();
-    samples_ = pass_->run(r, s, metrics::observerViewProj(s));
+    if (!shared && !pass_) pass_.emplace();
+    samples_ = (shared ? *shared : *pass_).run(r, s, metrics::observerViewProj(s));
     held_ = s;
 }
 

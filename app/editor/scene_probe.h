@@ -27,7 +27,9 @@ public:
 
     // After `r` rendered `s` (s.output = the scene viewport's size): read the frame back if it is
     // wanted and differs from the one already held. Needs the GL context current.
-    void update(bool wanted, const Renderer& r, const Settings& s);
+    // `shared`: a pass to read through instead of the probe's own: the editor gives the Accuracy
+    // panel's, which draws the same frame's surfaces, so they are kept once (issue 39 #10).
+    void update(bool wanted, const Renderer& r, const Settings& s, MeasurePass* shared = nullptr);
     const MeasureSamples* samples() const { return held_ ? &samples_ : nullptr; }
 
 private:

@@ -3,6 +3,7 @@
 #include "metrics/map_warnings.h"
 
 #include "app/cost_profile_file.h"
+#include "app/editor/memory_breakdown.h"
 #include "app/editor/side_split_handles.h"
 #include "renderer/image/image_io.h"
 #include "renderer/render/device.h"
@@ -181,7 +182,7 @@ bool ViewportRenderer::renderViews(const EditorModel& model, const Settings& s, 
     // A moment filter's tiles read the frame's cascade block (filter kind, exponents).
     const bool moments = isMomentFilter(model.valid().filter.kind);
     if (moments) renderer_->bindShadingInputs();
-    shadowTiles_->update(renderer_->shadowMaps(), 256, moments ? &renderer_->momentMaps() : nullptr);
+    shadowTiles_->update(renderer_->shadowMaps(), kTileSize, moments ? &renderer_->momentMaps() : nullptr);
     return true;
 }
 
@@ -207,7 +208,7 @@ void ViewportRenderer::updateProbe(const EditorModel& model, const ViewportFrame
     Settings s = model.valid();
     s.output.width = sceneWidth_;
     s.output.height = sceneHeight_;
-    probe_.update(true, *renderer_, s);
+    probe_.update(true, *renderer_, s, &accuracy_->measurePass());
     std::vector<float> texelWorld;
     for (const CascadeStats& c : stats_.cascades) texelWorld.push_back(c.texelWorldSize);
     probeView_ = readProbe(*probe_.samples(), int(f.probePixel.x), int(f.probePixel.y), s, texelWorld, accuracy_->classes());
@@ -306,6 +307,40 @@ void ViewportRenderer::fillUiInputs(ui::UiInputs& in, const EditorModel& model) 
         in.sideSplitHandles = sideSplitHandles(renderer_->plan(), model.sideCamera(), float(pip_.width()) / float(pip_.height()));
     if (abStats_) in.ab.stats = &*abStats_;
     if (accuracyA_) in.ab.accuracy = accuracyA_->view();
+    in.memory = memory();
+}
+
+namespace {
+MeasureHeld measureHeld(std::string what, const MeasurePass& pass, std::size_t samplesPixels) {
+    const MeasurePass::Held h = pass.held();
+    return {std::move(what), h.keptPixels, h.readBackPixels, {h.surfaceWidth, h.surfaceHeight},
+            {h.shadowWidth, h.shadowHeight}, samplesPixels};
+}
+}  // namespace
+
+ui::MemoryView ViewportRenderer::memory() const {
+    MemoryInputs in;
+    in.scene = {renderer_->width(), renderer_->height()};
+    in.pip = {pip_.width(), pip_.height()};
+    in.abImage = {ab_.image().width(), ab_.image().height()};
+    in.maps = renderer_->shadowMaps().layout();
+    in.momentBytes = renderer_->momentMaps().layers() > 0 ? renderer_->momentMaps().bytes() : 0;
+    in.screenShadowBytes = renderer_->screenShadow() ? renderer_->screenShadow()->bytes() : 0;
+    in.screenShadowBytes += accuracy_->measurePass().held().screenShadowBytes;
+    in.tileSize = shadowTiles_->layers() > 0 ? kTileSize : 0;
+    in.tiles = shadowTiles_->layers();
+    for (int i = 0; i < shadowTiles_->layers(); ++i) in.tiles += shadowTiles_->varianceTexture(i) ? 1 : 0;
+    in.atlas = {shadowTiles_->atlasWidth(), shadowTiles_->atlasHeight()};
+    const MeasureSamples* probed = probe_.samples();
+    in.measures.push_back(measureHeld("Accuracy and probe", accuracy_->measurePass(), probed ? probed->size() : 0));
+    if (accuracyA_) in.measures.push_back(measureHeld("A's accuracy", accuracyA_->measurePass(), 0));
+    in.overlay = {accuracy_->overlayWidth(), accuracy_->overlayHeight()};
+    const Scene& scene = renderer_->sceneGpu().scene();
+    in.vertices = scene.vertices.size();
+    in.indices = scene.indices.size();
+    in.clusteredIndices = renderer_->sceneGpu().clustered().indices.size();
+    for (const Image& image : scene.images) in.images.push_back({image.width, image.height});
+    return {memoryBreakdown(in), residentBytes()};
 }
 
 glm::vec3 ViewportRenderer::pickedPoint(ImVec2 mouse, ImVec2 scenePos, ImVec2 fbScale, glm::vec3 fallback) const {

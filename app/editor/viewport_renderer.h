@@ -50,6 +50,8 @@ void writeWindowShot(const std::filesystem::path& file, int width, int height);
 
 class ViewportRenderer {
 public:
+    static constexpr int kTileSize = 256;  // texels per side of each shadow-map viewer tile
+
     explicit ViewportRenderer(const EditorModel& model);
     ~ViewportRenderer();
     ViewportRenderer(const ViewportRenderer&) = delete;
@@ -69,6 +71,8 @@ public:
     int imageWidth() const { return renderer_->width(); }
     int imageHeight() const { return renderer_->height(); }
     void writeSceneShot(const std::filesystem::path& file) const;  // the main view, no panels
+    // The bytes its textures and buffers hold, by kind (issue 39 #10), and the process's resident set.
+    ui::MemoryView memory() const;
 
 private:
     void placeScene(const EditorModel& model, const ViewportFrame& f);

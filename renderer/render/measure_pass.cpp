@@ -45,6 +45,16 @@ std::size_t MeasurePass::SurfaceKey::bytes() const {
     return 7 * std::size_t(width) * std::size_t(height) * sizeof(glm::vec4);
 }
 
+MeasurePass::Held MeasurePass::held() const {
+    Held h{0, 0, surfaceWidth_, surfaceHeight_, shadowWidth_, shadowHeight_, screen_ ? screen_->bytes() : 0};
+    for (const Surface& s : surfaces_) {
+        const std::size_t px = std::size_t(s.key.width) * std::size_t(s.key.height);
+        h.keptPixels += px;
+        if (!s.readPosition.empty()) h.readBackPixels += px;
+    }
+    return h;
+}
+
 void MeasurePass::drawScene(const Renderer& r) const {
     r.sceneGpu().bindGeometry();
     for (const DrawItem& item : r.sceneGpu().scene().draws) r.sceneGpu().draw(item, FaceCulling::PerMaterial);

@@ -48,6 +48,18 @@ public:
     std::size_t surfacesDrawn() const { return surfacesDrawn_; }
     std::size_t surfacesReused() const { return surfacesReused_; }
 
+    // What the pass holds now, for the editor's memory breakdown (issue 39 #10): the pixels of the
+    // surfaces kept (four RGBA32F targets and the geometry's read-back vec4 each), of those whose
+    // position and normal are read back too (two vec4), and the sizes of the shared targets
+    // (geometry RGBA32F + depth D32F; shadow RGBA32F).
+    struct Held {
+        std::size_t keptPixels = 0, readBackPixels = 0;
+        int surfaceWidth = 0, surfaceHeight = 0;
+        int shadowWidth = 0, shadowHeight = 0;
+        std::size_t screenShadowBytes = 0;
+    };
+    Held held() const;
+
     // Kept surfaces, most recently used first, while they take at most this many bytes (GPU and
     // read-back copies); the newest is always kept. A tune alternates between about five views
     // (26 MB each at 640x360).

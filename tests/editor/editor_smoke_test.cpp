@@ -99,7 +99,8 @@ std::string sceneSize(const std::string& log) {
 
 // The Accuracy panel on the real window: after the camera has been still, the background ground
 // truth ends, its figures are those `measure` gives for the same frame, and its error overlay is
-// drawn over the scene. Bias off, so acne covers the ground in the overlay's red.
+// drawn over the scene once switched on (--error-overlay: it is off by default). Bias off, so acne
+// covers the ground in the overlay's magenta.
 TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run missing (scripts/setup.sh installs xvfb)";
     fs::path dir = fs::temp_directory_path() / ("st-accuracy-" + std::to_string(::getpid()));
@@ -111,7 +112,7 @@ TEST(EditorSmokeTest, AccuracyPanelShowsMeasuredFiguresAndOverlayOnceStill) {
     st::savePresetAtomic(s, preset);
     const fs::path shot = dir / "editor.png", log = dir / "log.txt";
     std::string editor = "XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" ST_SHADOWTUNE
-                         "' editor '" + preset.string() + "' --frames 2 --wait-accuracy --debug-gl --screenshot '" +
+                         "' editor '" + preset.string() + "' --frames 2 --wait-accuracy --error-overlay --debug-gl --screenshot '" +
                          shot.string() + "' > '" + log.string() + "' 2>&1";
     ASSERT_EQ(std::system(editor.c_str()), 0) << "editor failed, see " << log;
     const std::string editorLog = readText(log);

@@ -165,6 +165,9 @@ TEST_F(EditorUiGLTest, AccuracyPanelAndOverlayAreDrawnUpright) {
     d.in.accuracy = doneAccuracy();
     warmUp(d, 3);
     ASSERT_TRUE(d.drawn("accuracy.figures"));
+    EXPECT_LT(d.screenshot().pixels[(130 * 1280 + 680) * 4], 100) << "the overlay is drawn before it is asked for";
+    d.click("accuracy.overlay");  // off by default (issue 39 #3): the toggle turns it on
+    warmUp(d, 1);
     const Rgba8Image shot = d.screenshot();
     auto at = [&](int x, int y) { return &shot.pixels[(std::size_t(y) * 1280 + std::size_t(x)) * 4]; };
     EXPECT_GT(at(680, 130)[0], 200);  // red on top: texel row 0 is the picture's top row
@@ -173,7 +176,7 @@ TEST_F(EditorUiGLTest, AccuracyPanelAndOverlayAreDrawnUpright) {
     EXPECT_LT(at(680, 330)[0], 60);
     screenshot(d, "editor_accuracy.png");
 
-    d.click("accuracy.overlay");  // off: the scene shows through again
+    d.click("accuracy.overlay");  // off again: the scene shows through
     warmUp(d, 1);
     EXPECT_LT(d.screenshot().pixels[(130 * 1280 + 680) * 4], 100);
 }

@@ -466,7 +466,7 @@ TEST_F(EditorUiTest, AccuracyPanelShowsFiguresOnlyWhenDone) {
     EXPECT_TRUE(d.drawn("accuracy.state"));
     EXPECT_FALSE(d.drawn("accuracy.figures"));
     EXPECT_TRUE(d.last.accuracyWanted);  // open by default: the app computes
-    EXPECT_TRUE(d.last.errorOverlay);
+    EXPECT_FALSE(d.last.errorOverlay);   // ... but paints nothing over the scene until asked
 
     d.in.accuracy.state = ui::AccuracyView::State::Computing;
     d.in.accuracy.progress = 0.4f;
@@ -487,13 +487,32 @@ TEST_F(EditorUiTest, AccuracyPanelShowsFiguresOnlyWhenDone) {
     EXPECT_FALSE(d.drawn("accuracy.figures"));
 }
 
-TEST_F(EditorUiTest, OverlayCheckboxTurnsTheOverlayRequestOff) {
+// Issue 39 #3: the overlay was on by default, its magenta and cyan read as part of the picture.
+// Off until the Accuracy panel's toggle, whose label says what the colours mean; on, then off again.
+TEST_F(EditorUiTest, ErrorOverlayIsOffUntilTheAccuracyPanelsToggle) {
     d.in.accuracy = doneAccuracy();
-    d.frame();
-    ASSERT_TRUE(d.last.errorOverlay);
+    d.frames(2);
+    ASSERT_TRUE(d.drawn("accuracy.overlay"));
+    EXPECT_FALSE(d.last.errorOverlay) << "the overlay is on by default";
+    d.click("accuracy.overlay");
+    EXPECT_TRUE(d.last.errorOverlay);
+    EXPECT_TRUE(d.last.accuracyWanted);
     d.click("accuracy.overlay");
     EXPECT_FALSE(d.last.errorOverlay);
     EXPECT_TRUE(d.last.accuracyWanted);  // the figures are still wanted
-    d.click("accuracy.overlay");
+
+    // The toggle and its tooltip name the colours; the panel's key repeats them beside it.
+    EXPECT_NE(std::string_view(ui::kErrorOverlayLabel).find("errors"), std::string_view::npos);
+    for (const char* word : {"Magenta: false shadow", "Cyan: false light", "off by default"})
+        EXPECT_NE(std::string_view(ui::kErrorOverlayTooltip).find(word), std::string_view::npos) << word;
+}
+
+// `editor --error-overlay` starts with it on (the smoke test's screenshot of the overlay).
+TEST_F(EditorUiTest, SetErrorOverlayTurnsTheToggleOn) {
+    d.ui().setErrorOverlay(true);
+    d.in.accuracy = doneAccuracy();
+    d.frame();
     EXPECT_TRUE(d.last.errorOverlay);
+    d.click("accuracy.overlay");
+    EXPECT_FALSE(d.last.errorOverlay);
 }
