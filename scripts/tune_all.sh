@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Tunes each scene against each reference at that reference's modelled budget and keeps the tuned
-# preset as presets/tuned/<scene>-as-<reference>.json (issue 19's proof on real scenes), with the
+# preset as presets/tuned/<scene>-at-<reference>-budget.json (issue 19's proof on real scenes), with the
 # tune's folder (journal, front, explain.md, summary.json) under OUT. Reruns resume: a finished
 # tune's folder makes no new evaluations. Prints one line per tune; scripts/tuned_table.sh turns
 # the folders into docs/tuning.md's tables.
 #   scripts/tune_all.sh [BUILD_DIR] [EVALUATIONS] [SIZE] [OUT] -- [REFERENCE.json ...]
 # Defaults: build/release, 40 evaluations, 320x180, out/tuned-runs, every seed preset and engine
-# default. Needs ../shared/assets. ONLY="run run ..." (names as <scene>-as-<reference>) tunes just
+# default. Needs ../shared/assets. ONLY="run run ..." (names as <scene>-at-<reference>-budget) tunes just
 # those: with more EVALUATIONS, a finished tune's walk goes on from its journal (docs/tuning.md#running).
 #   ONLY="$(scripts/tuned_table.sh OUT | awk -F' [|] ' '/missed/ {print $1}' | tr -d '| ')" scripts/tune_all.sh build/release 80 320x180 OUT
 set -euo pipefail
@@ -27,7 +27,7 @@ mkdir -p presets/tuned "$out"
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .json); [ "$name" = default ] && name=yard
   for ref in "${refs[@]}"; do
-    run="$name-as-$(basename "$ref" .json)"
+    run="$name-at-$(basename "$ref" .json)-budget"
     if [ -n "${ONLY:-}" ] && [[ " $(echo $ONLY) " != *" $run "* ]]; then continue; fi
     start=$(date +%s)
     if ! EGL_PLATFORM=surfaceless "$build/shadowtune" tune "$scene" --budget-from "$ref" --evaluations "$evaluations" \

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The web-engine rows of docs/tuning.md's tuned table, measured in the engines themselves
 # (`shadowtune engine-check`, docs/cli.md#engine-check): for each scene and engine with a tuned preset
-# presets/tuned/<scene>-as-<engine>.json, two checks on the scene's preset view: the engine's defaults
+# presets/tuned/<scene>-at-<engine>-budget.json, two checks on the scene's preset view: the engine's defaults
 # (`engine-check presets/scenes/<scene>.json --engine E --defaults`) and the tuned preset exported to
-# the engine's knobs (`engine-check presets/tuned/<scene>-as-<engine>.json --engine E`). Prints one
+# the engine's knobs (`engine-check presets/tuned/<scene>-at-<engine>-budget.json --engine E`). Prints one
 # Markdown table: misclassified share in the engine with its defaults and with the exported tuned
 # preset, the gain (defaults / tuned), the pixel agreement of engine and model in each check, and the
 # knobs the engine lacks of the tuned preset (figures.json `lacks`). A scene and engine without a
@@ -64,9 +64,9 @@ rows=()
 for scene in "${scenes[@]}"; do
   for engine in $engines; do
     case $engine in threejs|babylon) ;; *) echo "error: unknown engine '$engine' (threejs, babylon)" >&2; exit 2 ;; esac
-    tuned=$root/presets/tuned/$scene-as-$engine.json
+    tuned=$root/presets/tuned/$scene-at-$engine-budget.json
     if [[ ! -f $tuned ]]; then
-      echo "no presets/tuned/$scene-as-$engine.json: $scene left out for $engine" >&2
+      echo "no presets/tuned/$scene-at-$engine-budget.json: $scene left out for $engine" >&2
       continue
     fi
     ok=1

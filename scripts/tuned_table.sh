@@ -18,7 +18,7 @@ echo "| scene as reference | reference: misclassified / soft filtered / cost | t
 echo "|---|---|---|---|---|---|---|---|"
 for summary in "$out"/*/summary.json; do
   run=$(basename "$(dirname "$summary")")
-  reference=${run##*-as-} preset=$root/presets/tuned/$run.json
+  reference=${run##*-at-} reference=${reference%-budget} preset=$root/presets/tuned/$run.json
   case $reference in
     unreal | unity | godot | bevy | filament | threejs | babylon)
       if [ -x "$build/shadowtune" ] && [ -f "$preset" ]; then
