@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace st::ui {
 namespace {
@@ -165,11 +166,14 @@ void overlayToggle(UiFrame& f) {
     ImGui::Checkbox(kErrorOverlayLabel, &f.state.errorOverlay);
     recordItem(f.state.rects, "accuracy.overlay");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kErrorOverlayTooltip);
-    // The key beside the toggle, in the overlay's own colours, so the words and hues are learnt together.
-    ImGui::SameLine();
-    ImGui::TextColored(kFalseShadowColour, "magenta: false shadow");
-    ImGui::SameLine();
-    ImGui::TextColored(kFalseLightColour, "cyan: false light");
+    // The key beside the toggle, in the overlay's own colours, so the words and hues are learnt
+    // together; a piece that would run past the panel's edge (1000x700) goes to the next line.
+    for (const auto& [colour, text] : {std::pair{kFalseShadowColour, "magenta: false shadow"},
+                                       std::pair{kFalseLightColour, "cyan: false light"}}) {
+        ImGui::SameLine();
+        if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(text).x) ImGui::NewLine();
+        ImGui::TextColored(colour, "%s", text);
+    }
 }
 
 }  // namespace

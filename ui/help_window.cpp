@@ -5,7 +5,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
+#include <cfloat>
 
 namespace st::ui {
 namespace {
@@ -50,8 +52,10 @@ void drawTable() {
 // of the resident set is the CPU side (the scene's copy, the ray caster's BVH, the driver).
 void drawMemory(UiFrame& f) {
     const MemoryView& m = f.in.memory;
-    if (m.lines.empty() || !ImGui::CollapsingHeader("Memory")) return;
-    recordItem(f.state.rects, "help.memory");
+    if (m.lines.empty()) return;
+    const bool open = ImGui::CollapsingHeader("Memory");
+    recordItem(f.state.rects, "help.memoryHeader");
+    if (!open) return;
     if (ImGui::BeginTable("memory", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         auto row = [](const std::string& what, const std::string& shape, const std::string& size) {
             ImGui::TableNextRow();
@@ -70,7 +74,15 @@ void drawMemory(UiFrame& f) {
                 row("The rest", "scene copy, ray caster's BVH, driver, UI", formatBytes(m.residentBytes - m.total()));
         }
         ImGui::EndTable();
+        recordItem(f.state.rects, "help.memory");
     }
+}
+
+// Never past the window's bottom edge: the Memory table opened at 1000x700 ran off it, and an
+// auto-resized window grows with its content. Cut to fit, it scrolls.
+void fitAboveBottom(ImGuiSizeCallbackData* d) {
+    const float room = ImGui::GetIO().DisplaySize.y - d->Pos.y - 4.0f;
+    d->DesiredSize.y = std::min(d->DesiredSize.y, std::max(room, 120.0f));
 }
 
 }  // namespace
@@ -78,6 +90,7 @@ void drawMemory(UiFrame& f) {
 void drawHelpWindow(UiFrame& f) {
     if (!f.state.showHelp) return;
     placeNextWindow(Panel::Help);
+    ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {FLT_MAX, FLT_MAX}, fitAboveBottom);
     // Sized to its text: a fixed size cut the longest line ("orbit around the point under the c").
     if (ImGui::Begin("Help", &f.state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
         drawTable();
@@ -88,6 +101,8 @@ void drawHelpWindow(UiFrame& f) {
         ImGui::PopTextWrapPos();
         recordItem(f.state.rects, "help");
         drawMemory(f);
+        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        f.state.rects["window.Help"] = {pos, {pos.x + size.x, pos.y + size.y}};
     }
     ImGui::End();
 }

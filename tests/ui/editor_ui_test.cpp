@@ -516,3 +516,21 @@ TEST_F(EditorUiTest, SetErrorOverlayTurnsTheToggleOn) {
     d.click("accuracy.overlay");
     EXPECT_FALSE(d.last.errorOverlay);
 }
+
+// Issue 39 #10: Help (F1) > Memory lists where the memory goes; opened at 1000x700 the window
+// stays above the bottom edge (an auto-sized window grew past it) and its table scrolls.
+TEST(HelpMemoryTest, MemoryTableOpensAndTheHelpWindowStaysOnScreen) {
+    UiDriver d({1000.0f, 700.0f});
+    for (int i = 0; i < 14; ++i)
+        d.in.memory.lines.push_back({"Object " + std::to_string(i), "1000x700 RGBA8", std::size_t(i + 1) << 20});
+    d.in.memory.residentBytes = std::size_t(600) << 20;
+    d.frame();
+    d.pressKey(kKeyF1);
+    d.frames(3);
+    ASSERT_TRUE(d.drawn("help.memoryHeader"));
+    EXPECT_FALSE(d.drawn("help.memory")) << "closed until asked: the keys come first";
+    d.click("help.memoryHeader");
+    d.frames(3);
+    EXPECT_TRUE(d.drawn("help.memory"));
+    EXPECT_LE(d.rect("window.Help").max.y, 700.0f) << "the Help window runs past the bottom edge";
+}
