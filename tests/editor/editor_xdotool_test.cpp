@@ -27,7 +27,7 @@ nlohmann::json readJson(const fs::path& file) {
 int driveEditor(const fs::path& dir, const std::string& preset, const std::string& actions) {
     std::ofstream(dir / "drive.sh") << "set -u\n"
                                        "'" ST_SHADOWTUNE "' editor '" << preset << "' --layout-report '" << (dir / "report.json").string()
-                                    << "' > '" << (dir / "editor.txt").string() << "' 2>&1 &\n"
+                                    << "' --status-file '" << (dir / "status.json").string() << "' > '" << (dir / "editor.txt").string() << "' 2>&1 &\n"
                                        "pid=$!\n"
                                        "timeout 60 xdotool search --sync --name '^shadowtune' >/dev/null || exit 101\n"
                                        "sleep 1  # the first frames: the scene loaded, the panels placed\n"
@@ -174,4 +174,24 @@ TEST(EditorXdotoolTest, CtrlASelectsAllOfATextField) {
         << "Ctrl+O did not open File > Open, or Ctrl+A did not select the field's text (\"junk\" stayed in front of the path); see "
         << dir / "editor.txt";
     if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+}
+
+// Issue 39 #9: Tab swaps the main and side views (the big viewport then carries the cascade key,
+// the small one is titled "Main view (Tab: swap back)"). A Tab from xdotool did not reach the
+// window once; this is a user's tap of it, seen in the status file, and a second tap swaps back.
+TEST(EditorXdotoolTest, ATapOfTabSwapsTheViewsAndASecondSwapsBack) {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "xvfb-run or xdotool missing (scripts/setup.sh installs xvfb and xdotool)";
+    const fs::path dir = fs::temp_directory_path() / ("st-xdotool-tab-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "config" / "shadowtune");
+    std::ofstream(dir / "config" / "shadowtune" / "window.json") << R"({"width": 1280, "height": 720})";
+    const std::string preset = ST_PRESET_DIR "/dx-sdk-csm11.json";
+    const std::string tab = "xdotool mousemove 640 400\nxdotool keydown Tab; sleep 0.01; xdotool keyup Tab\nsleep 1";
+    ASSERT_EQ(driveEditor(dir, preset, tab), 0) << "see " << dir / "editor.txt" << " and " << dir / "drive.txt";
+    EXPECT_EQ(readJson(dir / "status.json").value("swapped", false), true) << readJson(dir / "status.json").dump();
+    ASSERT_EQ(driveEditor(dir, preset, tab + "\nxdotool keydown Tab; sleep 0.01; xdotool keyup Tab\nsleep 1"), 0)
+        << "see " << dir / "editor.txt";
+    EXPECT_EQ(readJson(dir / "status.json").value("swapped", true), false) << readJson(dir / "status.json").dump();
+    fs::remove_all(dir);
 }
