@@ -103,7 +103,10 @@ void drawLacks(UiFrame& f, xport::Engine e, const xport::EngineKnobs& k) {
         return;
     }
     ImGui::TextColored(kErrorColour, "%s lacks %zu of these settings:", xport::engineName(e).c_str(), k.lacks.size());
-    for (const std::string& l : k.lacks) ImGui::BulletText("%s", l.c_str());
+    for (const std::string& l : k.lacks) {  // wrapped: Unreal's and Unity's run past a narrow column
+        ImGui::Bullet();
+        ImGui::TextWrapped("%s", l.c_str());
+    }
     recordItem(f.state.rects, "engine.lacks");
     if (ImGui::Button("Keep only what it takes")) applyEdit(f, xport::engineModel(e, k.knobs, f.s));
     recordItem(f.state.rects, "engine.project");
