@@ -61,10 +61,11 @@ void drawMemory(UiFrame& f) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(what.c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", shape.c_str());
+            // The size before the shape: in a narrow window the shape is what scrolls out of view.
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(size.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", shape.c_str());
         };
         for (const MemoryLine& l : m.lines) row(l.what, l.shape, formatBytes(l.bytes));
         row("Textures and buffers", "", formatBytes(m.total()));
@@ -78,11 +79,12 @@ void drawMemory(UiFrame& f) {
     }
 }
 
-// Never past the window's bottom edge: the Memory table opened at 1000x700 ran off it, and an
-// auto-resized window grows with its content. Cut to fit, it scrolls.
+// Never past the window's bottom or right edge: the Memory table opened at 1000x700 ran off both,
+// an auto-resized window growing with its content. Cut to fit, it scrolls.
 void fitAboveBottom(ImGuiSizeCallbackData* d) {
-    const float room = ImGui::GetIO().DisplaySize.y - d->Pos.y - 4.0f;
-    d->DesiredSize.y = std::min(d->DesiredSize.y, std::max(room, 120.0f));
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    d->DesiredSize.x = std::min(d->DesiredSize.x, std::max(display.x - d->Pos.x - 4.0f, 200.0f));
+    d->DesiredSize.y = std::min(d->DesiredSize.y, std::max(display.y - d->Pos.y - 4.0f, 120.0f));
 }
 
 }  // namespace
@@ -92,7 +94,7 @@ void drawHelpWindow(UiFrame& f) {
     placeNextWindow(Panel::Help);
     ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {FLT_MAX, FLT_MAX}, fitAboveBottom);
     // Sized to its text: a fixed size cut the longest line ("orbit around the point under the c").
-    if (ImGui::Begin("Help", &f.state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (ImGui::Begin("Help", &f.state.showHelp, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_HorizontalScrollbar)) {
         drawTable();
         ImGui::Spacing();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 34.0f);

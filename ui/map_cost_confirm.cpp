@@ -69,7 +69,11 @@ void drawConfirmMapCost(UiFrame& f) {
     }
     placeNextWindow(Panel::Confirm);
     if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    // Wrapped: with the first frame's cost the question runs to ~140 characters, wider than a
+    // 1000 px window's scene.
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
     ImGui::TextUnformatted(ask.question.c_str());
+    ImGui::PopTextWrapPos();
     recordItem(f.state.rects, "mapcost.question");
     ImGui::Spacing();
     if (modalButton(f, "Apply", "mapcost.apply") && ask.field) {

@@ -522,7 +522,8 @@ TEST_F(EditorUiTest, SetErrorOverlayTurnsTheToggleOn) {
 TEST(HelpMemoryTest, MemoryTableOpensAndTheHelpWindowStaysOnScreen) {
     UiDriver d({1000.0f, 700.0f});
     for (int i = 0; i < 14; ++i)
-        d.in.memory.lines.push_back({"Object " + std::to_string(i), "1000x700 RGBA8", std::size_t(i + 1) << 20});
+        d.in.memory.lines.push_back({"Accuracy and probe: object " + std::to_string(i),
+                                     "1 to 3 vec4 a pixel kept, 4 a pixel of samples", std::size_t(i + 1) << 20});
     d.in.memory.residentBytes = std::size_t(600) << 20;
     d.frame();
     d.pressKey(kKeyF1);
@@ -533,4 +534,5 @@ TEST(HelpMemoryTest, MemoryTableOpensAndTheHelpWindowStaysOnScreen) {
     d.frames(3);
     EXPECT_TRUE(d.drawn("help.memory"));
     EXPECT_LE(d.rect("window.Help").max.y, 700.0f) << "the Help window runs past the bottom edge";
+    EXPECT_LE(d.rect("window.Help").max.x, 1000.0f) << "the Help window runs past the right edge";
 }
