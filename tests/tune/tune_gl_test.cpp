@@ -106,7 +106,7 @@ TEST_F(TuneGLTest, AnEvaluationIsMeasuresFigures) {
 namespace st::tune {
 namespace {
 
-// presets/tuned/<scene>-as-<reference>.json (docs/tuning.md, scripts/tune_all.sh): each loads, is
+// presets/tuned/<scene>-at-<reference>-budget.json (docs/tuning.md, scripts/tune_all.sh): each loads, is
 // the tune of a shipped scene preset at a shipped reference's budget, and keeps that scene's file
 // and output size's aspect.
 TEST(TunedPresetsTest, EachLoadsAndNamesItsSceneAndReference) {
@@ -118,9 +118,12 @@ TEST(TunedPresetsTest, EachLoadsAndNamesItsSceneAndReference) {
         SCOPED_TRACE(e.path().string());
         ++count;
         const std::string stem = e.path().stem().string();
-        const std::size_t as = stem.find("-as-");
-        ASSERT_NE(as, std::string::npos) << "named <scene>-as-<reference>";
-        const std::string scene = stem.substr(0, as), ref = stem.substr(as + 4);
+        const std::size_t at = stem.find("-at-");
+        const std::string suffix = "-budget";
+        ASSERT_NE(at, std::string::npos) << "named <scene>-at-<reference>-budget";
+        ASSERT_TRUE(stem.size() > suffix.size() && stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0)
+            << "named <scene>-at-<reference>-budget";
+        const std::string scene = stem.substr(0, at), ref = stem.substr(at + 4, stem.size() - suffix.size() - at - 4);
         const fs::path scenePreset = scene == "yard" ? root / "default.json" : root / "scenes" / (scene + ".json");
         EXPECT_TRUE(fs::exists(root / (ref + ".json")) || fs::exists(root / "engines" / (ref + ".json"))) << ref;
         ASSERT_TRUE(fs::exists(scenePreset)) << scenePreset;
