@@ -51,7 +51,12 @@ features_of() {
     godot) echo 'fit-samples|light box fitted to the visible samples (casters clamped as by a pancake)|.cascades.fit = "samples" | .cascades.zExtension = "pancake"' ;;
     *) echo 'fit-samples|light box fitted to the visible samples|.cascades.fit = "samples"' ;;
   esac
-  echo 'slope-bias|slope-scaled bias (1 texel)|.bias.slope = 1.0'
+  case $1 in
+    # Unreal (ShadowSlopeBias) and Filament (polygonOffsetSlope) have a slope bias; Unity's is fixed at 2.5
+    unreal|filament) ;;
+    unity) echo 'slope-bias|a slope bias other than the fixed 2.5 (1 texel)|.bias.slope = 1.0' ;;
+    *) echo 'slope-bias|slope-scaled bias (1 texel)|.bias.slope = 1.0' ;;
+  esac
   case $1 in
     threejs|babylon) echo 'normal-texels|normal offset in texels (0.5)|.bias.normalOffsetUnit = "texels" | .bias.normalOffset = 0.5' ;;
     unreal) echo 'normal-texels|normal offset (0.5 texels)|.bias.normalOffsetUnit = "texels" | .bias.normalOffset = 0.5' ;;
