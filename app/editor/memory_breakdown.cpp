@@ -50,6 +50,7 @@ std::size_t mipChainTexels(Extent e) {
 std::vector<ui::MemoryLine> memoryBreakdown(const MemoryInputs& in) {
     std::vector<ui::MemoryLine> lines;
     addLine(lines, "Shadow maps", memMapsText(in.maps), csm::storageBytes(in.maps));
+    addLine(lines, "Shadow maps (interactive preview)", memMapsText(in.previewMaps), csm::storageBytes(in.previewMaps));
     addLine(lines, "Moment maps", "", in.momentBytes);
     addLine(lines, "Screen-space shadow", "", in.screenShadowBytes);
     addLine(lines, "Scene view", memExtentText(in.scene, "RGBA8 + D32F"), in.scene.pixels() * (kMemRgba8 + kMemD32f));

@@ -33,6 +33,7 @@ struct MemoryInputs {
     Extent pip;                      // the picture-in-picture: RGBA8 + D32F
     Extent abImage;                  // A's image, once the split was on: RGBA8 + D32F
     csm::StorageLayout maps;         // D32F
+    csm::StorageLayout previewMaps;  // the interactive preview's own smaller set, once one ran (D32F)
     std::size_t momentBytes = 0;     // MomentMaps::bytes() (0 without a moment filter)
     std::size_t screenShadowBytes = 0;  // ScreenShadow::bytes() of the renderer and the passes
     int tileSize = 0;                // the shadow-map viewer: RGBA8 tiles and one R32F raw tile

@@ -131,7 +131,14 @@ bool ViewportRenderer::renderScene(EditorModel& model, const ViewportFrame& f, S
         const auto t0 = std::chrono::steady_clock::now();
         std::string message;
         renderA(model, f, width, height, message);
+        // An interactive frame's smaller maps go into the renderer's second set: the full-size
+        // maps stay for the full frame after the move (it re-allocated them, issue 39 #1).
+        RenderOptions options = renderer_->options();
+        options.previewMaps = interactive;
+        renderer_->setOptions(options);
         heldRendered_ = renderViews(model, in.live, interactive ? scale : 1.0, message);
+        options.previewMaps = false;
+        renderer_->setOptions(options);
         // Casters the light box cuts off lose their shadows: said where the artist looks, as
         // `render` prints it (issue 39 #6), not only as the figures panel's orange "!".
         if (heldRendered_)
@@ -323,7 +330,8 @@ ui::MemoryView ViewportRenderer::memory() const {
     in.scene = {renderer_->width(), renderer_->height()};
     in.pip = {pip_.width(), pip_.height()};
     in.abImage = {ab_.image().width(), ab_.image().height()};
-    in.maps = renderer_->shadowMaps().layout();
+    in.maps = renderer_->shadowMaps().held(MapSet::Full);
+    in.previewMaps = renderer_->shadowMaps().held(MapSet::Preview);
     in.momentBytes = renderer_->momentMaps().layers() > 0 ? renderer_->momentMaps().bytes() : 0;
     in.screenShadowBytes = renderer_->screenShadow() ? renderer_->screenShadow()->bytes() : 0;
     in.screenShadowBytes += accuracy_->measurePass().held().screenShadowBytes;

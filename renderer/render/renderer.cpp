@@ -80,7 +80,7 @@ FrameStats Renderer::render(const Settings& s, const OrbitCamera& orbit) {
     plan_ = csm::planCascades(s, aspect, scene_.scene().wsBounds, reduce ? &samples : nullptr);
     stats.splits = plan_.splits;
     recordDepthBounds(s, reduce ? &samples : nullptr, stats);
-    shadowMaps_.ensure(plan_.storage);
+    shadowMaps_.ensure(plan_.storage, options_.previewMaps ? MapSet::Preview : MapSet::Full);
     stats.shadowMapBytes = shadowMaps_.bytes();
     frameBlock_.upload(frameBlock(s, plan_));
     shadowPass(s, stats);

@@ -51,6 +51,10 @@ struct RenderOptions {
     // does not: for a caller that reads its figures from the measurement pass (a tune's
     // evaluation), it saves a filtered shading of every fragment.
     bool shadeMain = true;
+    // The frame is the editor's interactive preview (smaller maps while the view moves): its maps
+    // go into a set of their own (MapSet::Preview), so the full-size ones survive for the full
+    // frame that follows. Off everywhere else: one set, as before.
+    bool previewMaps = false;
 };
 
 class Renderer {

@@ -3,6 +3,7 @@
 #include "shaders/interface.h"
 
 #include <string>
+#include <utility>
 
 namespace st {
 namespace {
@@ -30,19 +31,24 @@ const char* labelOf(CascadeStorage storage) {
 }
 }  // namespace
 
-void ShadowMaps::ensure(const csm::StorageLayout& layout) {
-    const bool same = layout.storage == layout_.storage && layout.textures == layout_.textures &&
-                      layout.tiles == layout_.tiles && !textures_.empty();
-    if (same) return;
-    textures_.clear();
-    for (const csm::MapTexture& t : layout.textures) {
-        gpu::Texture tex = gpu::createTexture(GL_TEXTURE_2D_ARRAY);
-        glTextureStorage3D(tex.id(), 1, GL_DEPTH_COMPONENT32F, t.width, t.height, t.layers);
-        glObjectLabel(GL_TEXTURE, tex.id(), -1, labelOf(layout.storage));
-        // Lit everywhere until drawn: the atlas's padding is never drawn into.
-        const float far = 1.0f;
-        glClearTexImage(tex.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
-        textures_.push_back(std::move(tex));
+bool ShadowMaps::Allocation::holds(const csm::StorageLayout& l) const {
+    return !textures.empty() && l.storage == layout.storage && l.textures == layout.textures && l.tiles == layout.tiles;
+}
+
+void ShadowMaps::ensure(const csm::StorageLayout& layout, MapSet set) {
+    Allocation& full = sets_[index(MapSet::Full)];
+    Allocation& preview = sets_[index(MapSet::Preview)];
+    if (full.holds(layout)) {  // a preview whose maps are the full ones needs no second set
+        active_ = index(MapSet::Full);
+    } else if (preview.holds(layout)) {
+        if (set == MapSet::Full) {  // the full maps are now these: the old full set is stale
+            std::swap(full, preview);
+            preview = {};
+        }
+        active_ = index(set);
+    } else {
+        allocate(sets_[index(set)], layout);
+        active_ = index(set);
     }
     if (!fbo_) fbo_ = gpu::createFramebuffer();
     if (!nearest_) nearest_ = compareSampler(GL_NEAREST);
@@ -51,7 +57,21 @@ void ShadowMaps::ensure(const csm::StorageLayout& layout) {
         raw_ = compareSampler(GL_NEAREST);
         glSamplerParameteri(raw_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
     }
-    layout_ = layout;
+}
+
+void ShadowMaps::allocate(Allocation& a, const csm::StorageLayout& layout) {
+    a.textures.clear();  // freed before the new ones are made: never both in memory
+    for (const csm::MapTexture& t : layout.textures) {
+        gpu::Texture tex = gpu::createTexture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(tex.id(), 1, GL_DEPTH_COMPONENT32F, t.width, t.height, t.layers);
+        glObjectLabel(GL_TEXTURE, tex.id(), -1, labelOf(layout.storage));
+        // Lit everywhere until drawn: the atlas's padding is never drawn into.
+        const float far = 1.0f;
+        glClearTexImage(tex.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+        a.textures.push_back(std::move(tex));
+    }
+    a.layout = layout;
+    ++allocations_;
 }
 
 GLuint ShadowMaps::texture(int cascade) const { return textureAt(tile(cascade).texture); }
@@ -75,7 +95,7 @@ void ShadowMaps::beginCascade(int cascade, gpu::PassState state) const {
 }
 
 void ShadowMaps::bindForSampling() const {
-    if (layout_.storage == CascadeStorage::Textures) {
+    if (layout().storage == CascadeStorage::Textures) {
         for (int i = 0; i < textureCount(); ++i) {
             glBindTextureUnit(ST_BINDING_CASCADE_MAPS + i, textureAt(i));
             glBindSampler(ST_BINDING_CASCADE_MAPS + i, linear_.id());

@@ -7,6 +7,7 @@
 #include "tests/support/image_compare.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
@@ -51,10 +52,20 @@ TEST(EditorFrameRateTest, AStillCameraReusesTheSceneAndAMovingRunEndsOnAFullFram
     EXPECT_EQ(still.rendered + still.reused, 8);
 
     ASSERT_EQ(editor("--frames 6 --orbit 4 --scene-screenshot '" + (dir / "editor.png").string() + "' --save-as '" +
-                         (dir / "saved.json").string() + "'",
+                         (dir / "saved.json").string() + "' --status-file '" + (dir / "status.json").string() + "'",
                      "moving.txt"),
               0)
         << "see " << dir / "moving.txt";
+    // Written after the last interactive frame: the full-size maps (the preset's 4 x 1024 atlas,
+    // 2048² D32F) are still held beside the preview's, not replaced by them (issue 39 #1: the
+    // full frame after every move re-allocated them).
+    std::ifstream statusIn(dir / "status.json");
+    const nlohmann::json status = nlohmann::json::parse(statusIn, nullptr, false);
+    ASSERT_TRUE(status.is_object()) << "see " << dir / "status.json";
+    EXPECT_EQ(status["memory"]["lines"].value("Shadow maps", 0.0), 2048.0 * 2048 * 4) << status["memory"].dump();
+    const double preview = status["memory"]["lines"].value("Shadow maps (interactive preview)", 0.0);
+    EXPECT_GT(preview, 0.0) << status["memory"].dump();
+    EXPECT_LE(preview, 1024.0 * 1024 * 4) << "half the side, or a quarter";
     const SceneRenders moving = sceneRenders(dir / "moving.txt");
     EXPECT_EQ(moving.rendered, 6) << "every frame moved";
     EXPECT_EQ(moving.reused, 0);

@@ -72,6 +72,18 @@ TEST(MemoryBreakdownTest, SumEqualsTheSizesOfAKnownConfiguration) {
                                [](const ui::MemoryLine& a, const ui::MemoryLine& b) { return a.bytes > b.bytes; }));
 }
 
+// Issue 39 #1: the interactive preview keeps a set of maps of its own beside the full ones; the
+// table lists both, the preview's under its own name.
+TEST(MemoryBreakdownTest, ThePreviewsOwnMapsAreListedBesideTheFullOnes) {
+    MemoryInputs in = knownConfiguration();
+    in.previewMaps.storage = CascadeStorage::Array;
+    in.previewMaps.textures = {{1024, 1024, 4}};
+    const std::vector<ui::MemoryLine> lines = memoryBreakdown(in);
+    EXPECT_EQ(lineBytes(lines, "Shadow maps"), 4u * 2048 * 2048 * 4);
+    EXPECT_EQ(lineBytes(lines, "Shadow maps (interactive preview)"), 4u * 1024 * 1024 * 4);
+    EXPECT_EQ(lines.size(), 11u);
+}
+
 TEST(MemoryBreakdownTest, ResidentSetIsReadOnLinux) {
     EXPECT_GT(residentBytes(), std::size_t(1) << 20);
 }

@@ -76,5 +76,33 @@ TEST_F(SceneFrameGLTest, AFrameWithADeferredMapIsRenderedUntilTheMapIsDrawn) {
     EXPECT_EQ(r.readRgba8(), freshRender(scene, still)) << "once no map waits, the held image is the fresh render's";
 }
 
+// Issue 39 #1: every full frame after a move re-allocated the full-size maps (the preview's
+// smaller ones had replaced them): 145 ms of a 4 x 4096² first frame. A preview frame now draws
+// into a set of its own; the full frame after it finds its maps, and still draws what a fresh
+// renderer would.
+TEST_F(SceneFrameGLTest, AnInteractiveFrameLeavesTheFullSizeMapsInPlace) {
+    const Settings s = test::presetAtTestSize("default", 192, 108);
+    const Scene scene = loadScene(s.scene, ST_PRESET_DIR);
+    Renderer r(scene);
+    r.render(s);
+    const GLuint fullTexture = r.shadowMaps().texture(0);
+    const int fullAllocations = r.shadowMaps().allocations();
+    Settings moved = s;
+    for (int gesture = 0; gesture < 2; ++gesture) {
+        moved.camera.position.x += 3.0f;
+        Settings preview = interactiveMaps(moved);
+        preview.output.width = 96, preview.output.height = 54;
+        r.setOptions({.previewMaps = true});
+        r.render(preview);
+        ASSERT_EQ(r.shadowMaps().layout().tiles[0].size, s.cascades.mapSize / 2) << "the preview drew its smaller maps";
+        r.setOptions({});
+        r.render(moved);  // the first full frame after the move
+        EXPECT_EQ(r.shadowMaps().allocations(), fullAllocations + 1) << "gesture " << gesture << ": one preview set, ever";
+        EXPECT_EQ(r.shadowMaps().texture(0), fullTexture) << "the full-size maps were re-created";
+        EXPECT_EQ(r.shadowMaps().held(MapSet::Preview).tiles[0].size, s.cascades.mapSize / 2) << "listed for the memory table";
+        EXPECT_EQ(r.readRgba8(), freshRender(scene, moved)) << "the kept maps were redrawn for the moved view";
+    }
+}
+
 }  // namespace
 }  // namespace st::app
