@@ -162,11 +162,8 @@ void unityBiasKnobs(json& k, const Settings& s, const PresetFacts& f, float radi
     if (depth > 10.0) lacks.push_back("a depth bias above 10 texels");
     k["m_ShadowDepthBias"] = round6(std::min(10.0, depth));
     if (b.constant < 0.0f) lacks.push_back("a bias away from the light");
-    for (std::size_t i = 1; i < f.texel.size() && b.constant > 0.0f; ++i)
-        if (std::abs(cascadeFactor(b.constantScale, int(i)) - f.texel[i] / f.texel.front()) > 0.01f) {
-            lacks.push_back("a constant bias per cascade other than its texel: URP's bias is in each cascade's texels");
-            break;
-        }
+    if (b.constant > 0.0f && !factorsFollowTexels(b.constantScale, f))
+        lacks.push_back("a constant bias per cascade other than its texel: URP's bias is in each cascade's texels");
     if (std::abs(b.slope - kUnityRasterSlopeBias) > 0.01f) lacks.push_back("a slope bias other than URP's fixed raster bias 2.5");
     if (b.normalOffset / radius > 10.0f) lacks.push_back("a normal bias above 10 texels");
     if (b.normalOffsetUnit == OffsetUnit::Texels) k["m_ShadowNormalBias"] = round6(std::clamp(b.normalOffset / radius, 0.0f, 10.0f));

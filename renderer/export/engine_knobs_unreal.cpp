@@ -140,11 +140,8 @@ void unrealBiasKnobs(json& k, const Settings& s, const PresetFacts& f, std::vect
     if (b.constant > kUnrealDepthTexelsPerBias * 10.0 * f.texel.front()) lacks.push_back("a depth bias above ShadowBias 10");
     k["ShadowBias"] = round6(shadowBias);
     if (b.constant < 0.0f) lacks.push_back("a bias away from the light");
-    for (std::size_t i = 1; i < f.texel.size() && b.constant > 0.0f; ++i)
-        if (std::abs(cascadeFactor(b.constantScale, int(i)) - f.texel[i] / f.texel.front()) > 0.01f) {
-            lacks.push_back("a constant bias per cascade other than its texel: UE's bias is in each cascade's texels");
-            break;
-        }
+    if (b.constant > 0.0f && !factorsFollowTexels(b.constantScale, f))
+        lacks.push_back("a constant bias per cascade other than its texel: UE's bias is in each cascade's texels");
     const double slopeBias = shadowBias > 0.0 ? b.slope / (kUnrealSlopeTexelsPerBias * shadowBias) : 0.0;
     if (slopeBias > 10.0) lacks.push_back("a slope bias above ShadowSlopeBias 10 x ShadowBias");
     if (shadowBias > 0.0) k["ShadowSlopeBias"] = round6(std::min(10.0, slopeBias));

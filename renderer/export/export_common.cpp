@@ -65,6 +65,12 @@ std::string filterKindText(const Settings& s) {
     return "filter.kind " + std::string(EnumNames<FilterKind>::names[size_t(s.filter.kind)]);
 }
 
+bool factorsFollowTexels(const std::vector<float>& factors, const PresetFacts& f) {
+    for (std::size_t i = 0; i < f.texel.size(); ++i)
+        if (std::abs(cascadeFactor(factors, int(i)) - f.texel[i] / f.texel.front()) > 0.01f) return false;
+    return true;
+}
+
 namespace {
 // bias.constantScale / slopeScale / normalOffsetScale: no engine's light or project settings hold a
 // bias per cascade (Godot's shadow_bias grows with each split's depth range by itself, and
@@ -72,11 +78,7 @@ namespace {
 // Unity URP and Unreal count their depth bias in texels of each cascade: factors equal to the
 // cascades' texel ratios are what they do anyway.
 bool followsTexels(Engine engine, const Settings& s, const std::vector<float>& factors) {
-    if (engine != Engine::Unity && engine != Engine::Unreal) return false;
-    const PresetFacts f = presetFacts(s);
-    for (std::size_t i = 0; i < f.texel.size(); ++i)
-        if (std::abs(cascadeFactor(factors, int(i)) - f.texel[i] / f.texel.front()) > 0.01f) return false;
-    return true;
+    return (engine == Engine::Unity || engine == Engine::Unreal) && factorsFollowTexels(factors, presetFacts(s));
 }
 
 void addCascadeBias(EngineExport& e, const Settings& s) {

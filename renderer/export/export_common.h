@@ -33,6 +33,10 @@ std::string texelNote(const PresetFacts& f);
 // cascades.fadeBand fades the last fraction of the last cascade's range; engines state their fade as a
 // share of the whole shadow distance: fadeBand x (end - start of the last cascade) / end.
 double fadeShareOfEnd(const Settings& s, const PresetFacts& f);
+
+// Per-cascade factors (bias.constantScale) equal, within 1 %, to the cascades' texel sizes over
+// cascade 0's: a bias in texels of each cascade, as Unity URP and Unreal count theirs.
+bool factorsFollowTexels(const std::vector<float>& factors, const PresetFacts& f);
 // "filter.kind vsm": for the notes of an engine's filter item.
 std::string filterKindText(const Settings& s);
 // Settings no engine's shadow settings expose (depth-fitted splits, a map size per cascade, cascades
