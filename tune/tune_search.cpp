@@ -63,13 +63,13 @@ public:
     // The index of `s` among the evaluated points, evaluating it if new; nullopt once the
     // evaluations are spent or a stop was requested.
     std::optional<std::size_t> visit(const Settings& given, const std::string& move) {
-        const Settings s = onto(given);
+        const auto [s, refused] = projected(given);
         const std::string key = toOrderedJson(s).dump();
         if (const auto it = seen_.find(key); it != seen_.end()) return it->second;
         Candidate c{s, {}, move, false};
-        if (const std::vector<std::string> problems = validate(s); !problems.empty()) {
+        if (const std::vector<std::string> problems = validate(s); !problems.empty() || !refused.empty()) {
             c.eval.valid = false;
-            c.eval.problem = problems.front();
+            c.eval.problem = refused.empty() ? problems.front() : refused;
         } else {
             if (out_.evaluations >= cap_) return std::nullopt;
             if (opt_.stopRequested && opt_.stopRequested()) {
@@ -111,10 +111,10 @@ public:
 
     // The screen of `s` (none: settings the validator or the screen refuses).
     std::optional<Evaluation> screened(const Settings& given) {
-        const Settings s = onto(given);
+        const auto [s, refused] = projected(given);
         const std::string key = toOrderedJson(s).dump();
         if (const auto it = screens_.find(key); it != screens_.end()) return it->second;
-        if (!validate(s).empty()) return std::nullopt;
+        if (!refused.empty() || !validate(s).empty()) return std::nullopt;
         if (opt_.stopRequested && opt_.stopRequested()) return std::nullopt;  // visit() stops the search next
         Evaluation e = opt_.screen(s);
         ++out_.screenings;
@@ -408,15 +408,21 @@ private:
     int screeningLimit() const { return screenCap_; }
     bool seen(const Settings& s) const { return seen_.count(toOrderedJson(onto(s)).dump()) != 0; }
 
-    // A point the projection refuses stays as it is: the validator or the evaluation then refuses it.
-    Settings onto(const Settings& s) const {
-        if (!space_.project) return s;
+    // `s` projected onto the space (an engine's knobs), and why the projection refused it, if it
+    // did: such a point stays as it is and is not measured (it is not what the engine would take).
+    struct Projected {
+        Settings settings;
+        std::string refused;
+    };
+    Projected projected(const Settings& s) const {
+        if (!space_.project) return {s, ""};
         try {
-            return space_.project(s);
-        } catch (const std::exception&) {
-            return s;
+            return {space_.project(s), ""};
+        } catch (const std::exception& e) {
+            return {s, std::string("the space's projection refuses it: ") + e.what()};
         }
     }
+    Settings onto(const Settings& s) const { return projected(s).settings; }
 
     void report(const std::string& trying) {
         if (!opt_.progress) return;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <functional>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 namespace st::tune {
@@ -89,6 +90,31 @@ TEST(TuneSearchTest, EvaluatesEachPointOnceAndNeverPastItsLimit) {
     EXPECT_EQ(calls, 17);
     EXPECT_EQ(r.evaluations, 17);
     EXPECT_FALSE(r.stopped) << "running out of evaluations is not a stop";
+}
+
+// A point the space's projection refuses (an engine without such a knob value) is never measured
+// nor chosen: measuring it as it stands would score settings the engine cannot take.
+TEST(TuneSearchTest, APointTheProjectionRefusesIsNeitherMeasuredNorChosen) {
+    Space space = smallSpace();
+    space.project = [](const Settings& s) {
+        if (s.cascades.count == 3) throw std::invalid_argument("no 3 cascades here");
+        return s;
+    };
+    SearchOptions opt;
+    opt.budget.ms = 25.0;
+    opt.evaluations = 60;
+    Settings three;
+    three.cascades.count = 3;  // a start the projection refuses, as an engine's defaults could be
+    const SearchResult r = search({three, Settings{}}, space, [&](const Settings& s) {
+        EXPECT_NE(s.cascades.count, 3) << "a refused point was measured";
+        return bowl(s);
+    }, opt);
+    ASSERT_TRUE(r.best.has_value());
+    EXPECT_NE(r.evaluated[*r.best].settings.cascades.count, 3);
+    const bool refusedSeen = std::any_of(r.evaluated.begin(), r.evaluated.end(), [](const Candidate& c) {
+        return c.settings.cascades.count == 3 && !c.eval.valid && c.eval.problem.find("refuses") != std::string::npos;
+    });
+    EXPECT_TRUE(refusedSeen) << "the refused start is listed as refused, with the projection's reason";
 }
 
 TEST(TuneSearchTest, TheSameSeedWalksTheSameWay) {
