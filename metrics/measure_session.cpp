@@ -146,17 +146,19 @@ std::vector<float> texelWorldSizes(const csm::CascadePlan& plan) {
 }  // namespace
 
 namespace {
-// MeasureOptions::shadeMain off: the renderer's main pass unshaded while this lives.
-class UnshadedMain {
+// The renderer's options a measurement asks for, while this lives: MeasureOptions::shadeMain off
+// leaves the main pass unshaded; subpixelSteps sets the rasterizer grid drawn with.
+class MeasuredOptions {
 public:
-    UnshadedMain(Renderer& r, bool on) : r_(r), was_(r.options()) {
+    MeasuredOptions(Renderer& r, const MeasureOptions& opt) : r_(r), was_(r.options()) {
         RenderOptions o = was_;
-        o.shadeMain = was_.shadeMain && !on;
+        o.shadeMain = was_.shadeMain && opt.shadeMain;
+        o.subpixelSteps = opt.subpixelSteps;
         r_.setOptions(o);
     }
-    ~UnshadedMain() { r_.setOptions(was_); }
-    UnshadedMain(const UnshadedMain&) = delete;
-    UnshadedMain& operator=(const UnshadedMain&) = delete;
+    ~MeasuredOptions() { r_.setOptions(was_); }
+    MeasuredOptions(const MeasuredOptions&) = delete;
+    MeasuredOptions& operator=(const MeasuredOptions&) = delete;
 
 private:
     Renderer& r_;
@@ -203,7 +205,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     }
     Renderer& r = opt.renderer ? *opt.renderer : *e.renderer;
     {
-        const UnshadedMain unshaded(r, !opt.shadeMain);
+        const MeasuredOptions options(r, opt);
         measureStill(e, r, pass(), s, m);
     }
     m.warnings = zExtensionWarnings(m.frame);
@@ -225,7 +227,7 @@ PresetMeasurement MeasureSession::measure(const Settings& s, const fs::path& pre
     }
     if (opt.flicker && s.path.frames > 0) {
         const auto t0 = Clock::now();
-        const UnshadedMain unshaded(r, !opt.shadeMain);
+        const MeasuredOptions options(r, opt);
         m.flicker = measureFlicker(r, pass(), s, &m.flickerStdDev, m.truth);
         m.timings.flickerMs = msSince(t0);
         report(opt, "flicker over " + std::to_string(s.path.frames) + " frames " + seconds(m.timings.flickerMs));

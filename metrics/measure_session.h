@@ -74,6 +74,8 @@ struct MeasureOptions {
     // shading (RenderOptions::shadeMain): the figures come from the measurement pass and the
     // counted work is the same. Timed cost frames are always shaded.
     bool shadeMain = true;
+    // RenderOptions::subpixelSteps of every frame measured (0: this GPU's own sub-pixel grid).
+    int subpixelSteps = 0;
 };
 
 // The observer's world -> clip matrix: the preset camera at the output's aspect.

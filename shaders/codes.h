@@ -64,6 +64,11 @@
 #define ST_SNAP_CENTRE_ROUND 2  /* its centre rounded to texels of size / m (Babylon.js CSM) */
 #define ST_SNAP_COUNT 3
 
+/* SliceCorners (cascades.sliceCorners): where a fit finds the slice's corners */
+#define ST_CORNERS_EXACT 0            /* from the camera's planes, in float (renderer/csm/frustum.cpp) */
+#define ST_CORNERS_FLOAT32_INVERSE 1  /* through a float32-stored inverse view-projection (Babylon.js) */
+#define ST_CORNERS_COUNT 2
+
 // BiasUnit: what bias.constant counts
 #define ST_BIASUNIT_METRES 0
 #define ST_BIASUNIT_DEPTH 1     /* the light box's normalised depth (its near..far plane as 0..1) */

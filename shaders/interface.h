@@ -75,9 +75,9 @@
 #define ST_VIEW_BLOCK(M, A)                                                                       \
     M(mat4, viewProj)      /* ws -> clip of this pass */                                          \
     M(int, screenShadow)   /* bool: read the factor from the screen-space mask, not the maps */   \
-    M(int, viewPad0)                                                                              \
-    M(int, viewPad1)                                                                              \
-    M(int, viewPad2)
+    M(int, subpixelSteps)  /* >0: vertices snap to 1/steps of a pixel of this pass (the engine's GPU) */ \
+    M(int, viewportWidth)  /* pixels (texels) of this pass's viewport, for the snap */            \
+    M(int, viewportHeight)
 
 // One cascade's values, an element of CascadeBlock::cascade.
 #define ST_CASCADE_DATA(M, A)                                                                     \

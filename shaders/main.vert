@@ -1,5 +1,6 @@
 #version 450 core
 #include "interface.h"
+#include "subpixel_snap.glsl"
 // Invariant: the depth prepass (shadow_depth.vert) and the main pass (main.vert) must give the
 // same depth, since the main pass tests GL_LEQUAL against the prepass and writes none.
 invariant gl_Position;
@@ -15,5 +16,5 @@ void main() {
     vWsNormal = aNormal;
     vUv = aUv;
     vVsDepth = -(view * vec4(aPosition, 1.0)).z;
-    gl_Position = viewProj * vec4(aPosition, 1.0);
+    gl_Position = snapToSubpixels(viewProj * vec4(aPosition, 1.0));
 }

@@ -56,6 +56,10 @@ void addEngineCheckCommand(CLI::App& cli, int& exitCode) {
     cmd->add_option("--model-set", args->opt.modelSets,
                     "PATH=JSON: change one field of shadowtune's model (e.g. cascades.casterFaces=\"both\"), to see how far "
                     "the agreement falls when the model is wrong");
+    cmd->add_option("--subpixel-bits", args->opt.subpixelBits,
+                    "Sub-pixel bits of the engine's rasterizer, for the model to snap vertices alike (0: this GPU's own)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 8));
     cmd->add_flag("--debug-context,!--no-debug-context", args->opt.debugContext, "KHR_debug context");
     cmd->callback([args, &exitCode] { exitCode = runArgs(*args); });
 }

@@ -156,6 +156,7 @@ int runEngineCheck(const EngineCheckOptions& opt) {
             metrics::MeasureOptions mo;
             mo.cost = false;
             mo.flicker = false;
+            mo.subpixelSteps = opt.subpixelBits > 0 ? 1 << opt.subpixelBits : 0;
             auto m = std::make_shared<metrics::PresetMeasurement>(session.measure(model, folderOf(opt.preset), mo));
             return [&, m] {
                 if ((*result = waitForEngine(child, log)) != 0) return;

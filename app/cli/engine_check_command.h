@@ -23,6 +23,9 @@ struct EngineCheckOptions {
     std::filesystem::path enginesDir;   // engines/ (run.mjs); empty: next to the sources
     std::vector<std::string> modelSets; // --model-set PATH=JSON: a field of the model changed (to see the check fail)
     bool quiet = false;                 // no figure table on stdout (a tune's proof prints its own)
+    // The model rasterizes with the sub-pixel grid of the GPU the engine runs on: Chromium's
+    // SwiftShader keeps 4 bits (WebGL SUBPIXEL_BITS), so 1/16 pixel; 0: this GPU's own (llvmpipe 8).
+    int subpixelBits = 4;
 #ifdef NDEBUG
     bool debugContext = false;
 #else

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 namespace st::app {
@@ -74,6 +76,20 @@ json engineInfo(const fs::path& file) {
     }
 }
 
+// The model's pixels in the engine's layout (engines/README.md "The page interface"): per pixel,
+// rows top first, the filtered factor, the cascade (-1 beyond the shadows), N.L and coverage.
+void writeModelSamples(const fs::path& file, const MeasureSamples& s) {
+    std::vector<float> v(s.size() * 4);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        v[4 * i] = s.shadow[i].y;
+        v[4 * i + 1] = s.covered(i) ? s.shadow[i].z : -1.0f;
+        v[4 * i + 2] = s.normal[i].w;
+        v[4 * i + 3] = s.covered(i) ? 1.0f : 0.0f;
+    }
+    fs::create_directories(file.parent_path());
+    writeTextAtomic(file, std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float)));
+}
+
 }  // namespace
 
 int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& knobs, const metrics::PresetMeasurement& m,
@@ -109,6 +125,14 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
                                  {"only shadowtune shadowed", kModelOnly, a.modelOnlyShadow},
                                  {"not scored (facing away)", kAway, away},
                                  {"no surface", kNone, sky}}));
+    // The model snaps vertices to the grid of --subpixel-bits; an engine on another grid puts its
+    // acne stripes elsewhere (docs/engines.md "The rasterizer's grid"), so a mismatch is said.
+    std::optional<int> engineBits;
+    if (const auto it = info.find("info"); it != info.end() && it->contains("subpixelBits") && (*it)["subpixelBits"].is_number_integer())
+        engineBits = (*it)["subpixelBits"].get<int>();
+    if (engineBits && *engineBits != opt.subpixelBits)
+        std::fprintf(stderr, "warning: %s rasterized with %d sub-pixel bits, the model with %d (--subpixel-bits %d matches it)\n",
+                     name.c_str(), *engineBits, opt.subpixelBits, *engineBits);
     const json figures = {{"engine", {{"name", name}, {"version", version}, {"figures", figuresOf(a, a.engine)}}},
                           {"model", {{"figures", figuresOf(a, a.model)}}},
                           {"agreement", a.agreement()},
@@ -120,9 +144,11 @@ int writeEngineCheck(const EngineCheckOptions& opt, const xport::EngineKnobs& kn
                           {"size", {s.width, s.height}},
                           {"knobs", knobs.knobs},
                           {"lacks", knobs.lacks},
+                          {"subpixelBits", {{"engine", engineBits ? json(*engineBits) : json(nullptr)}, {"model", opt.subpixelBits}}},
                           {"engineTimings", info.value("timings", json::object())},
                           {"seconds", seconds}};
     writeTextAtomic(opt.outDir / "figures.json", figures.dump(2) + "\n");
+    writeModelSamples(opt.outDir / "model" / "samples.f32", s);
     if (opt.quiet) return 0;
     std::printf("%-22s %14s %14s\n", "", (name + " " + version).c_str(), "shadowtune");
     std::printf("%-22s %13.3f%% %13.3f%%\n", "misclassified", 100.0 * a.misclassified(a.engine), 100.0 * a.misclassified(a.model));

@@ -8,7 +8,8 @@
 // job.settings: CascadedShadowGenerator's knobs in Babylon's names (NOTES.md "Settings"); a missing key
 // keeps Babylon's default, an unknown key or a value of the wrong type fails the run.
 // job.debug (tests only): {output: "colour"} keeps Babylon's own linear colour (alpha 1) instead of the
-// probe; {receiveShadow: false} turns shadow receiving off on every mesh; {timeoutMs} the page's own
+// probe; {output: "lightuv"} writes cascade 0's light coordinates (u, v, depth in [0, 1], 1) instead, to
+// hold the receivers' light-space positions against the model's; {receiveShadow: false} turns shadow receiving off on every mesh; {timeoutMs} the page's own
 // deadline (default 110 s, under the driver's 120 s).
 //
 // How the factor is read (see NOTES.md "The probe"): a MaterialPluginBase registered for every material
@@ -98,7 +99,13 @@ const PROBE_FRAGMENT = `
 #endif
     stNdotL = dot(stN, normalize(-light0.vLightData.xyz));
 #endif
-#ifdef SHADOWTUNE_COLOUR
+#ifdef SHADOWTUNE_LIGHTUV
+    {
+        vec4 stP = vPositionFromLight0[0];
+        vec3 stC = stP.xyz / stP.w;
+        gl_FragColor = vec4(0.5 * stC + 0.5, 1.0);
+    }
+#elif defined(SHADOWTUNE_COLOUR)
     gl_FragColor = vec4(gl_FragColor.rgb, 1.0);
 #else
     gl_FragColor = vec4(stShadow, stCascade, stNdotL, 1.0);
@@ -106,16 +113,18 @@ const PROBE_FRAGMENT = `
 }
 `;
 
+let probeLightUv = false;
 let probeColour = false; // job.debug.output === "colour": set before the job's materials exist
 
 class ShadowtuneProbePlugin extends B.MaterialPluginBase {
   constructor(material) {
-    super(material, 'ShadowtuneProbe', 1000, { SHADOWTUNE_PROBE: false, SHADOWTUNE_COLOUR: false });
+    super(material, 'ShadowtuneProbe', 1000, { SHADOWTUNE_PROBE: false, SHADOWTUNE_COLOUR: false, SHADOWTUNE_LIGHTUV: false });
     this._enable(true);
   }
   prepareDefines(defines) {
     defines.SHADOWTUNE_PROBE = true;
     defines.SHADOWTUNE_COLOUR = probeColour;
+    defines.SHADOWTUNE_LIGHTUV = probeLightUv;
   }
   getClassName() {
     return 'ShadowtuneProbePlugin';
@@ -285,6 +294,7 @@ async function render(job) {
     if (!KNOWN.has(k)) throw new Error(`babylon page: unknown setting "${k}" (known: ${[...KNOWN].join(', ')})`);
   }
   probeColour = debug.output === 'colour';
+  probeLightUv = debug.output === 'lightuv';
 
   registerProbe();
 
@@ -473,6 +483,8 @@ async function render(job) {
       timings: { loadMs: tLoad1 - tLoad0, renderMs: tRender1 - tRender0 },
       info: {
         frames,
+        // the rasterizer's sub-pixel bits (SwiftShader: 4): engine-check's model snaps vertices alike
+        subpixelBits: engine._gl.getParameter(engine._gl.SUBPIXEL_BITS),
         // page-side phases: shader compilation (forceCompilation + whenReady), the frames, readPixels
         phasesMs: { compile: tCompiled - tRender0, frames: tFramed - tCompiled, readback: tRender1 - tFramed },
         pageTotalMs: performance.now() - t0,

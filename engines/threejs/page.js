@@ -381,6 +381,8 @@ async function shadowtuneRender(job) {
       const ext = gl.getExtension('WEBGL_debug_renderer_info');
       return ext ? gl.getParameter(ext.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
     })()}`,
+    // the rasterizer's sub-pixel bits (SwiftShader: 4): engine-check's model snaps vertices alike
+    subpixelBits: gl.getParameter(gl.SUBPIXEL_BITS),
     breaks: csm.breaks.slice(),
     cameraNear: camera.near,
     shadowFar,

@@ -49,6 +49,17 @@ bool splitsFollowSeenDepth(const CascadeSettings& c) {
     return c.depthBounds == DepthBounds::Fit && c.scheme != SplitScheme::Manual;
 }
 
+namespace {
+// The camera as an engine job gets it (app/cli/engine_check_command.cpp: the preset's numbers and
+// the output's width / height), in double so the float32 stores fall where the engine's do.
+Float32Camera float32Camera(const Settings& s, float aspect) {
+    const double outputAspect = double(s.output.width) / double(s.output.height);
+    return {glm::dvec3(s.camera.position), glm::dvec3(s.camera.target), double(s.camera.fovY),
+            float(outputAspect) == aspect ? outputAspect : double(aspect), double(s.camera.nearPlane),
+            double(s.camera.farPlane)};
+}
+}  // namespace
+
 CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBounds, const SampleBounds* samples) {
     const CascadeSettings& cs = s.cascades;
     CascadePlan plan;
@@ -72,6 +83,7 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.minFovY = glm::radians(cs.fitFovY);
     fp.wsOrigin = s.origin;
     fp.cameraRelative = cs.cameraRelative;
+    if (cs.sliceCorners == SliceCorners::Float32Inverse) fp.float32Corners = float32Camera(s, aspect);
     plan.storage = planStorage(cs);
     for (int i = 0; i < cs.count; ++i) {
         const auto k = static_cast<std::size_t>(i);

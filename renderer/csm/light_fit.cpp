@@ -51,11 +51,23 @@ struct SliceBox {
 };
 
 // Tight AABB of the slice corners in ls: the crop box (m_i, M_i) of seed 000, as in seed 002.
-SliceBox cornerBox(const CameraParams& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
-    Corners ls = sliceCornersFromCamera(cam, vsNear, vsFar);
+SliceBox cornerBox(Corners ls, const glm::mat4& lsView) {
     for (glm::vec3& p : ls) p = glm::vec3(lsView * glm::vec4(p, 1.0f));
     const Aabb box = boundsOf(ls);
     return {box, glm::vec2(box.extent())};
+}
+
+SliceBox cornerBox(const CameraParams& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
+    return cornerBox(sliceCornersFromCamera(cam, vsNear, vsFar), lsView);
+}
+
+// The slice [vsNear, vsFar] through the float32 inverse (FitParams::float32Corners): the engine cuts
+// its frustum's edges at the splits' fractions of [near, far].
+SliceBox float32CornerBox(const Float32Camera& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
+    const double range = cam.farPlane - cam.nearPlane;
+    return cornerBox(sliceCornersThroughFloat32Inverse(cam, (double(vsNear) - cam.nearPlane) / range,
+                                                       (double(vsFar) - cam.nearPlane) / range),
+                     lsView);
 }
 
 struct Sphere {
@@ -269,6 +281,7 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     out.vsFar = splits[i + 1];
     SliceBox box = p.fit == FitMode::Sphere     ? sphereBox(frame.camera, out.vsNear, out.vsFar, rotation)
                    : p.fit == FitMode::Diagonal ? diagonalBox(frame.camera, out.vsNear, out.vsFar, rotation)
+                   : p.float32Corners   ? float32CornerBox(*p.float32Corners, out.vsNear, out.vsFar, rotation)
                                                 : cornerBox(frame.camera, out.vsNear, out.vsFar, rotation);
     if (p.fit == FitMode::Samples && p.lsSamples) {
         // The reduction's bounds are in the rotation-only frame of scene coordinates: moved into

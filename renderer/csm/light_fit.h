@@ -1,5 +1,6 @@
 #pragma once
 // Light view and the per-cascade orthographic fit (crop matrix).
+#include "renderer/csm/float32_corners.h"
 #include "renderer/csm/frustum.h"
 #include "renderer/csm/geometry.h"
 #include "renderer/settings/settings.h"
@@ -47,6 +48,9 @@ struct FitParams {
     // position modulo a texel) taken in double: the snapping works in metres near the camera and
     // lands on the world grid however far the origin (cascades.cameraRelative).
     bool cameraRelative = false;
+    // FitMode::Cascade: the slice's corners through the float32 inverse of this camera's matrices
+    // (cascades.sliceCorners float32-inverse, Babylon.js) instead of from the camera's planes.
+    std::optional<Float32Camera> float32Corners;
 };
 
 struct CascadeFit {

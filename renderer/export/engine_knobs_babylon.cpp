@@ -62,6 +62,8 @@ Settings babylonModel(const json& given, const Settings& view) {
     // rounded up to 1/16 (approximate: Babylon centres it on the corners' mean); then the origin shift
     // (cSG:406-419) rounds the box's centre to whole texels, in both modes.
     c.fit = k.at("stabilizeCascades").get<bool>() ? FitMode::Sphere : FitMode::Cascade;
+    // cSG:423-459 finds the slice's corners through the float32 inverse of the camera's matrices.
+    c.sliceCorners = SliceCorners::Float32Inverse;
     c.stabilize = true;
     c.snap = Snap::CentreRound;
     // cSG:371-405: with depthClamp the box starts at the slice and casters in front are clamped

@@ -25,6 +25,7 @@ struct CascadeMapKey {
     int layers = 0;             // of the map storage
     int mapSize = 0;
     int casterFaces = 0;        // CasterFaces: which faces were drawn
+    int subpixelSteps = 0;      // RenderOptions::subpixelSteps: the grid vertices were snapped to
     bool operator==(const CascadeMapKey&) const = default;
 };
 

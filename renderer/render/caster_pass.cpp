@@ -67,13 +67,14 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
         if (csm::casterMayShadow(clusters[k].wsBounds, volume)) batches_.add(clusters, k);
     }
     const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.cascades(), shadowMaps_.tile(i).size,
-                            int(s.cascades.casterFaces)};
+                            int(s.cascades.casterFaces), options_.subpixelSteps};
     const CascadeDecision d = cache_.decide(i, key);
     if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));
     CascadeStats& held = held_[std::size_t(i)];
     if (d.redraw) {
         shadowMaps_.beginCascade(i, state);  // its layer or tile: viewport, scissor, cleared
-        viewBlock_.upload({fit.viewProj});
+        const int size = shadowMaps_.tile(i).size;
+        viewBlock_.upload(viewBlockOf(fit.viewProj, size, size, options_.subpixelSteps));
         scene_.drawDepthBatches(batches_, casterCulling(s.cascades.casterFaces), depthPrograms());
         cache_.drawn(i, key, fit);
         work = mapWork(shadowMaps_.tile(i).size, batches_.rangeCount());
@@ -106,7 +107,8 @@ void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassStat
     const bool pancake = s.cascades.zExtension == ZExtension::Pancake;
     const csm::CascadeFit& fit = plan_.cascades[std::size_t(i)];
     shadowMaps_.beginCascade(i, state);
-    viewBlock_.upload({fit.viewProj});
+    const int size = shadowMaps_.tile(i).size;
+    viewBlock_.upload(viewBlockOf(fit.viewProj, size, size, options_.subpixelSteps));
     for (const DrawItem& item : scene_.scene().draws) {
         if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
         scene_.draw(item, casterCulling(s.cascades.casterFaces));

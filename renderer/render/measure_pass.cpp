@@ -112,9 +112,7 @@ void MeasurePass::drawSurface(const Renderer& r, Surface& surface) {
     const float far = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
     glUseProgram(surfaceProgram_->id());
-    gpu_if::ViewBlock v;
-    v.viewProj = surface.key.observer;
-    view_.upload(v);
+    view_.upload(viewBlockOf(surface.key.observer, width, height, surface.key.subpixelSteps));
     view_.bind(ST_BLOCK_VIEW);
     r.bindShadingInputs();  // the frame block: the cascade camera's view and the sun
     drawScene(r);
@@ -186,7 +184,7 @@ std::vector<glm::vec4> MeasurePass::read(const gpu::Texture& texture, int width,
 MeasureSamples MeasurePass::run(const Renderer& r, const Settings& s, const glm::mat4& observerViewProj) {
     gpu::DebugGroup group("measure pass");
     Surface& surface = surfaceFor(r, {r.sceneGpu().serial(), observerViewProj, r.plan().vsView, -r.plan().wsLightDir,
-                                      s.output.width, s.output.height});
+                                      s.output.width, s.output.height, r.options().subpixelSteps});
     readSurface(surface);
     drawShadow(r, s, surface);
     return {s.output.width, s.output.height, surface.readPosition, surface.readNormal,
@@ -197,7 +195,8 @@ std::vector<glm::vec4> MeasurePass::runShadowOnly(const Renderer& r, const Setti
                                                   const glm::mat4& observerViewProj) {
     gpu::DebugGroup group("measure pass (shadow only)");
     const Surface& surface = surfaceFor(r, {r.sceneGpu().serial(), observerViewProj, r.plan().vsView,
-                                            -r.plan().wsLightDir, s.output.width, s.output.height});
+                                            -r.plan().wsLightDir, s.output.width, s.output.height,
+                                            r.options().subpixelSteps});
     drawShadow(r, s, surface);
     return read(shadow_, s.output.width, s.output.height);
 }

@@ -69,7 +69,7 @@ public:
 
 private:
     // What a surface pass's output depends on: the scene's geometry on the GPU, the observer, the
-    // cascade camera's view (the view depth), the sun (N.L) and the size.
+    // cascade camera's view (the view depth), the sun (N.L), the size and the rasterizer's grid.
     struct SurfaceKey {
         std::uint64_t scene = 0;  // SceneGpu::serial()
         glm::mat4 observer{1.0f};
@@ -77,6 +77,7 @@ private:
         glm::vec3 toSun{0.0f};
         int width = 0;
         int height = 0;
+        int subpixelSteps = 0;  // RenderOptions::subpixelSteps
         bool operator==(const SurfaceKey&) const = default;
         std::size_t bytes() const;  // what a surface of this size takes, kept and read back
     };

@@ -10,6 +10,16 @@
 #include <string>
 
 namespace st {
+
+gpu_if::ViewBlock viewBlockOf(const glm::mat4& viewProj, int width, int height, int subpixelSteps) {
+    gpu_if::ViewBlock v;
+    v.viewProj = viewProj;
+    v.subpixelSteps = subpixelSteps;
+    v.viewportWidth = width;
+    v.viewportHeight = height;
+    return v;
+}
+
 namespace {
 // Counter slots of a frame: the timers' (cascades, main, depth bounds, moment maps) with the
 // screen-space path split into its mask pass (a scene draw that filters the maps) and its blurs.
@@ -212,7 +222,7 @@ csm::SampleBounds Renderer::reduceSamples(const Settings& s, float aspect, Frame
         gpu::applyPassState(state);
         glClear(GL_DEPTH_BUFFER_BIT);
         glUseProgram(depthProgram_->id());
-        viewBlock_.upload({viewProj});
+        viewBlock_.upload(viewBlockOf(viewProj, target_.width(), target_.height(), options_.subpixelSteps));
         viewBlock_.bind(ST_BLOCK_VIEW);
         const DepthPrograms programs = depthPrograms();
         drawVisible(viewProj, &programs);  // culled and batched, as the main pass will draw it
@@ -391,8 +401,7 @@ void Renderer::mainPass(const Settings& s, const glm::mat4& viewProj, const Offs
     // Only the main camera's frame may go unshaded: the side view is an image to look at.
     const bool shade = options_.shadeMain || &target != &target_ || s.output.view == View::Side;
     glUseProgram(shade ? mainProgram_->id() : coverageProgram_->id());
-    gpu_if::ViewBlock v;
-    v.viewProj = viewProj;
+    gpu_if::ViewBlock v = viewBlockOf(viewProj, target.width(), target.height(), options_.subpixelSteps);
     v.screenShadow = screen ? 1 : 0;
     viewBlock_.upload(v);
     viewBlock_.bind(ST_BLOCK_VIEW);

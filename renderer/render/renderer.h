@@ -55,7 +55,14 @@ struct RenderOptions {
     // go into a set of their own (MapSet::Preview), so the full-size ones survive for the full
     // frame that follows. Off everywhere else: one set, as before.
     bool previewMaps = false;
+    // > 0: every vertex snaps to 1/subpixelSteps of a pixel (of a texel in the shadow maps) before
+    // it is drawn, as a rasterizer with log2(steps) sub-pixel bits does; 0: this GPU's own grid.
+    // engine-check's model draws with the grid of the GPU the engine ran on (SwiftShader: 16).
+    int subpixelSteps = 0;
 };
+
+// The view block of a pass drawing through `viewProj` into a width x height viewport.
+gpu_if::ViewBlock viewBlockOf(const glm::mat4& viewProj, int width, int height, int subpixelSteps);
 
 class Renderer {
 public:

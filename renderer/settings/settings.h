@@ -73,6 +73,16 @@ struct EnumNames<Snap> {
     static constexpr std::array<std::string_view, ST_SNAP_COUNT> names{"box-floor", "centre-floor", "centre-round"};
 };
 
+// Where the cascade fit finds each slice's corners: Exact from the camera's planes; Float32Inverse
+// as an engine that keeps its matrices in float32 does, unprojecting the NDC cube through the
+// float32 inverse of the camera's view-projection (Babylon.js; renderer/csm/float32_corners.h). Far
+// corners then move by up to ~1e-4 of their distance: nothing a user sees, but where acne stripes fall.
+enum class SliceCorners { Exact = ST_CORNERS_EXACT, Float32Inverse = ST_CORNERS_FLOAT32_INVERSE };
+template <>
+struct EnumNames<SliceCorners> {
+    static constexpr std::array<std::string_view, ST_CORNERS_COUNT> names{"exact", "float32-inverse"};
+};
+
 // What bias.constant counts: metres along the light, or the light box's normalised depth (three.js's
 // shadowBias on the receiver, Babylon.js's bias on the caster), whose metres grow with each box's depth.
 enum class BiasUnit { Metres = ST_BIASUNIT_METRES, Depth = ST_BIASUNIT_DEPTH };
@@ -198,6 +208,7 @@ static_assert(int(SplitScheme::Manual) == ST_SPLIT_COUNT - 1 && int(SplitScheme:
 static_assert(int(FitMode::Diagonal) == ST_FIT_COUNT - 1 && int(FitMode::Cascade) == 0);
 static_assert(int(CasterFaces::Front) == ST_FACES_COUNT - 1 && int(CasterFaces::Both) == 0);
 static_assert(int(Snap::CentreRound) == ST_SNAP_COUNT - 1 && int(Snap::BoxFloor) == 0);
+static_assert(int(SliceCorners::Float32Inverse) == ST_CORNERS_COUNT - 1 && int(SliceCorners::Exact) == 0);
 static_assert(int(BiasUnit::Depth) == ST_BIASUNIT_COUNT - 1 && int(BiasUnit::Metres) == 0);
 static_assert(int(OffsetUnit::Metres) == ST_OFFSET_COUNT - 1 && int(OffsetUnit::Texels) == 0);
 static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBounds::Off) == 0);
@@ -251,6 +262,7 @@ struct CascadeSettings {
     FitMode fit = FitMode::Cascade;
     bool stabilize = false;                // snap the light box to whole texels (seed 001)
     Snap snap = Snap::BoxFloor;            // how, when stabilize is on
+    SliceCorners sliceCorners = SliceCorners::Exact;  // where the fit finds each slice's corners
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 100.0f;     // metres, for ZExtension::Distance
     float lightDepth = 0.0f;               // metres from the box's near plane to its far one; 0 = to the slice's far side
