@@ -123,8 +123,8 @@
     M(int, vogelTaps)      /* taps of the Vogel-disc filter */                                    \
     M(float, filterRadius) /* Vogel-disc filter: radius in texels */                              \
     M(int, biasUnit)       /* ST_BIASUNIT_*: biasConstant in metres or the box's normalised depth */ \
-    M(int, cascadePad3)                                                                           \
-    M(int, cascadePad4)                                                                           \
+    M(float, bleedLow)     /* moment filters: lit share remapped from [bleedLow, bleedHigh] to [0, 1] */ \
+    M(float, bleedHigh)                                                                           \
     A(vec4, pcfWeights, 3) /* 1-D tap weights of the NxN filter, [k/4][k%4] for tap k - size/2 */ \
     A(vec4, blurWeights, 5) /* moment blur: weight of taps +-k, [k/4][k%4], k = 0..blurRadius */  \
     A(CascadeData, cascade, ST_MAX_CASCADES)

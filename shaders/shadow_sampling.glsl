@@ -276,6 +276,10 @@ float momentShadow(int i, vec2 uv, float z, vec3 wsDx, vec3 wsDy) {
     } else {
         lit = evsmLit(b, z, vec2(evsmPosExp, evsmNegExp), filterKind == ST_FILTER_EVSM4, minVariance);
     }
+    // Light-bleeding reduction by remapping (Lauritzen & McCool 2008, "Layered Variance Shadow
+    // Maps", sec. 4.2: linstep(amount, 1, p)); three.js cuts at 0.3 over 0.65
+    // (shadowmap_pars_fragment.glsl.js:248). [0, 1] leaves the share as it is.
+    lit = clamp((lit - bleedLow) / (bleedHigh - bleedLow), 0.0, 1.0);
     return pow(lit, bleedExponent);
 }
 

@@ -92,10 +92,13 @@ Settings threejsModel(const json& given, const Settings& view) {
     } else if (type == "BasicShadowMap") {
         f.kind = FilterKind::Hard;
     } else if (type == "VSMShadowMap") {
-        // shadowmap_pars_fragment.glsl.js:239: the variance floored at 1e-7. Approximate: three.js
-        // blurs by radius and remaps bleeding ((p - 0.3) / 0.65, line 248), not modelled.
+        // shadowmap_pars_fragment.glsl.js:239: the variance floored at 1e-7.
         f.kind = FilterKind::Vsm;
         f.minVariance = 1e-7f;
+        f.bleedLow = 0.3f, f.bleedHigh = 0.95f;  // line 248: (p_max - 0.3) / 0.65
+        // vsm.glsl.js: 8 taps over +-radius texels in each direction (WebGLShadowMap.js VSMPass);
+        // approximate: shadowtune's Gaussian over round(radius) texels each side.
+        f.blurRadius = int(std::lround(std::clamp(knobFloat(k, "radius", 0.0, 32.0), 0.0f, 16.0f)));
         // WebGLShadowMap.js:484-486: for VSM a material casts its own side, not the flipped one.
         if (k.at("shadowSide").is_null()) c.casterFaces = CasterFaces::Front;
     } else {
@@ -165,7 +168,12 @@ EngineKnobs threejsKnobsFor(const Settings& s) {
             k["radius"] = round6(s.filter.radius);
             if (s.filter.vogelTaps != 5) out.lacks.push_back("Vogel taps other than 5");
             break;
-        case FilterKind::Vsm: k["shadowMapType"] = "VSMShadowMap"; break;
+        case FilterKind::Vsm:
+            k["shadowMapType"] = "VSMShadowMap";
+            k["radius"] = s.filter.blurRadius;  // its blur's reach, texels each side
+            if (s.filter.bleedLow != 0.3f || s.filter.bleedHigh != 0.95f)
+                out.lacks.push_back("a bleed remap other than three.js's (p - 0.3) / 0.65");
+            break;
         default: out.lacks.push_back("filter '" + enumName(s.filter.kind) + "': PCF with radius 1 instead"); break;
     }
     return out;

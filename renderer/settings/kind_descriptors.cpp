@@ -13,7 +13,8 @@ using Reads = std::vector<std::string_view>;
 // The depth-compare kinds put the receiver's plane under every texel they compare
 // (shaders/shadow_sampling.glsl sampleCascade); the moment kinds compare no texel depths.
 constexpr std::string_view kReceiverPlane = "bias.receiverPlane";
-const Reads kMomentReads{"filter.blurRadius", "filter.mipmaps", "filter.moments16", "filter.bleedExponent"};
+const Reads kMomentReads{"filter.blurRadius", "filter.mipmaps", "filter.moments16", "filter.bleedExponent", "filter.bleedLow",
+                         "filter.bleedHigh"};
 
 Reads plus(Reads a, const Reads& b) {
     a.insert(a.end(), b.begin(), b.end());

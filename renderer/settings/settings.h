@@ -292,6 +292,8 @@ struct FilterSettings {
     bool moments16 = false;       // 16-bit storage (EVSM exponents clamp at 5.54, MSM quantised)
     float minVariance = 1e-5f;    // VSM/EVSM variance floor, squared shadow-texture depth units
     float bleedExponent = 1.0f;   // lit share raised to this power against light bleeding; 1 = off
+    float bleedLow = 0.0f;        // lit share remapped from [bleedLow, bleedHigh] to [0, 1] (three.js: 0.3, 0.95)
+    float bleedHigh = 1.0f;
     float evsmPositive = 40.0f;   // EVSM exponents, clamped at 42 (32-bit) or 5.54 (16-bit)
     float evsmNegative = 5.0f;
     float momentBias = 3e-5f;     // MSM: share the moments are pulled toward 0.5

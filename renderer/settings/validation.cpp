@@ -116,6 +116,12 @@ void checkNearFar(const Settings& s, std::vector<SettingsIssue>& out) {
                                           "), got " + formatFloat(s.camera.farPlane)});
 }
 
+void checkBleedRemap(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (s.filter.bleedLow < s.filter.bleedHigh) return;
+    out.push_back({"filter.bleedHigh", "must be greater than filter.bleedLow (" + formatFloat(s.filter.bleedLow) + "), got " +
+                                           formatFloat(s.filter.bleedHigh)});
+}
+
 void checkTarget(const Settings& s, std::vector<SettingsIssue>& out) {
     if (s.camera.target != s.camera.position) return;
     out.push_back({"camera.target", "must differ from camera.position, or the view direction is undefined"});
@@ -229,6 +235,7 @@ const std::vector<CrossRule>& crossRules() {
     static const std::vector<CrossRule> rules = {
         {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
         {"camera.target must differ from camera.position.", {"camera.position", "camera.target"}, checkTarget},
+        {"filter.bleedLow must be less than filter.bleedHigh.", {"filter.bleedLow", "filter.bleedHigh"}, checkBleedRemap},
         {"cascades.shadowDistance must be 0 (use the far plane) or in (camera.nearPlane, camera.farPlane].",
          {"camera.nearPlane", "camera.farPlane", "cascades.shadowDistance"},
          checkShadowDistance},

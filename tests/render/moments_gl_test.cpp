@@ -1,6 +1,7 @@
 // Moment filters (VSM, EVSM, MSM) on llvmpipe: the maps hold the depth moments (blurred by the
 // CPU's own separable Gaussian), the shaders' MSM reconstruction matches a double-precision CPU
 // solve on known moments, EVSM with small exponents reads like VSM, and the costs are reported.
+#include "renderer/render/measure_pass.h"
 #include "renderer/render/moment_maps.h"
 #include "renderer/render/shader_library.h"
 #include "renderer/render/shadow_map_view.h"
@@ -311,3 +312,33 @@ TEST_F(MomentsGLTest, ViewerMomentTilesShowTheMeanAndTheSpreadOfTheDepths) {
         EXPECT_EQ(lit, 0) << "no spread without a blur";
     }
 }
+
+namespace {
+// The bleed remap (filter.bleedLow/High, three.js's (p - 0.3) / 0.65) against the CPU's own remap
+// of the unremapped factor, pixel by pixel: the measurement pass's float factors, not the image.
+TEST_F(MomentsGLTest, BleedRemapIsTheLinstepOfTheUnremappedShare) {
+    Scene scene = makeBuiltinScene("box-over-plane");
+    Renderer r(scene);
+    MeasurePass measure;
+    Settings s = boxSettings(FilterKind::Vsm);
+    s.filter.blurRadius = 3;
+    r.render(s);
+    const glm::mat4 observer = r.plan().csProj * r.plan().vsView;
+    const MeasureSamples plain = measure.run(r, s, observer);
+    s.filter.bleedLow = 0.3f;
+    s.filter.bleedHigh = 0.95f;
+    r.render(s);
+    const MeasureSamples remapped = measure.run(r, s, observer);
+    int partial = 0, cut = 0;
+    for (std::size_t i = 0; i < plain.size(); ++i) {
+        if (!plain.receiver(i)) continue;
+        const float p = plain.shadow[i].y;
+        const float want = std::clamp((p - 0.3f) / 0.65f, 0.0f, 1.0f);
+        ASSERT_NEAR(remapped.shadow[i].y, want, 2e-5f) << "pixel " << i << ", unremapped " << p;
+        partial += p > 0.01f && p < 0.99f;
+        cut += p > 0.01f && p < 0.3f;
+    }
+    EXPECT_GT(partial, 100);  // penumbrae to remap
+    EXPECT_GT(cut, 10);       // some of them cut to full shadow
+}
+}  // namespace

@@ -26,7 +26,7 @@ Settings everyFieldChanged() {
                   .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f,
                   .cameraRelative = true, .fitFovY = 70.0f, .matricesOneFrameLate = true};
     s.filter = {.kind = FilterKind::PcfNxN, .size = 5, .weights = FilterWeights::Gaussian, .padding = true,
-                .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f,
+                .blurRadius = 4, .mipmaps = true, .moments16 = true, .minVariance = 2e-5f, .bleedExponent = 3.0f, .bleedLow = 0.2f, .bleedHigh = 0.9f,
                 .evsmPositive = 30.0f, .evsmNegative = 4.0f, .momentBias = 5e-5f, .blockerTaps = 7,
                 .pcssMaxRadius = 12.0f, .vogelTaps = 7, .radius = 1.5f, .screenSpace = ScreenSpace::Blur, .screenDownsample = 4,
                 .screenBlurRadius = 6, .screenDepthSigma = 0.25f, .contact = ContactShadows::March, .contactLength = 1.25f,

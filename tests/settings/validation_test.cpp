@@ -175,8 +175,17 @@ TEST(ValidationTest, PcssNeedsOneDepthTexture) {
                                                     "depths from one depth texture"});
 }
 
+TEST(ValidationTest, TheBleedRemapNeedsItsCutBelowItsTop) {
+    Settings s;
+    s.filter.bleedLow = 0.5f;
+    s.filter.bleedHigh = 0.5f;
+    EXPECT_EQ(validate(s), std::vector<std::string>{"filter.bleedHigh: must be greater than filter.bleedLow (0.5), got 0.5"});
+    s.filter.bleedHigh = 0.95f;
+    EXPECT_TRUE(validate(s).empty());
+}
+
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 10u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 11u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 
