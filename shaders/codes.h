@@ -69,6 +69,11 @@
 #define ST_CORNERS_FLOAT32_INVERSE 1  /* through a float32-stored inverse view-projection (Babylon.js) */
 #define ST_CORNERS_COUNT 2
 
+/* SphereCentre (cascades.sphereCentre): where the sphere fit centres each slice's sphere */
+#define ST_SPHERE_SMALLEST 0      /* the smallest sphere around the slice, on the view axis */
+#define ST_SPHERE_CORNERS_MEAN 1  /* the mean of the slice's 8 corners (Babylon.js, Godot) */
+#define ST_SPHERE_COUNT 2
+
 // BiasUnit: what bias.constant counts
 #define ST_BIASUNIT_METRES 0
 #define ST_BIASUNIT_DEPTH 1     /* the light box's normalised depth (its near..far plane as 0..1) */

@@ -83,6 +83,7 @@ CascadePlan planCascades(const Settings& s, float aspect, const Aabb& wsSceneBou
     fp.minFovY = glm::radians(cs.fitFovY);
     fp.wsOrigin = s.origin;
     fp.cameraRelative = cs.cameraRelative;
+    fp.sphereAroundCornersMean = cs.sphereCentre == SphereCentre::CornersMean;
     if (cs.sliceCorners == SliceCorners::Float32Inverse) fp.float32Corners = float32Camera(s, aspect);
     plan.storage = planStorage(cs);
     for (int i = 0; i < cs.count; ++i) {

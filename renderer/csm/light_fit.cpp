@@ -61,15 +61,6 @@ SliceBox cornerBox(const CameraParams& cam, float vsNear, float vsFar, const glm
     return cornerBox(sliceCornersFromCamera(cam, vsNear, vsFar), lsView);
 }
 
-// The slice [vsNear, vsFar] through the float32 inverse (FitParams::float32Corners): the engine cuts
-// its frustum's edges at the splits' fractions of [near, far].
-SliceBox float32CornerBox(const Float32Camera& cam, float vsNear, float vsFar, const glm::mat4& lsView) {
-    const double range = cam.farPlane - cam.nearPlane;
-    return cornerBox(sliceCornersThroughFloat32Inverse(cam, (double(vsNear) - cam.nearPlane) / range,
-                                                       (double(vsFar) - cam.nearPlane) / range),
-                     lsView);
-}
-
 struct Sphere {
     float vsDepth;  // centre on the view axis
     float radius;
@@ -98,6 +89,20 @@ SliceBox sphereBox(const CameraParams& cam, float vsNear, float vsFar, const glm
     const glm::vec4 wsCentre = inverseViewMatrix(cam) * glm::vec4(0.0f, 0.0f, -s.vsDepth, 1.0f);
     const glm::vec3 lsCentre(lsView * wsCentre);
     return {{lsCentre - s.radius, lsCentre + s.radius}, glm::vec2(2.0f * s.radius)};
+}
+
+// The sphere around the slice corners' mean, through its farthest corner, its radius rounded up to
+// 1/16 m: Babylon.js stabilizeCascades (cascadedShadowGenerator.pure.js:473-483, `Math.ceil(r * 16) / 16`),
+// looser than sphereBox's smallest one and off the view axis for a slice seen at an angle.
+SliceBox meanSphereBox(const Corners& ws, const glm::mat4& lsView) {
+    glm::dvec3 centre(0.0);
+    for (const glm::vec3& c : ws) centre += glm::dvec3(c);
+    centre /= 8.0;
+    double r = 0.0;
+    for (const glm::vec3& c : ws) r = std::max(r, glm::distance(glm::dvec3(c), centre));
+    const float radius = float(std::ceil(r * 16.0) / 16.0);
+    const glm::vec3 lsCentre(lsView * glm::vec4(glm::vec3(centre), 1.0f));
+    return {{lsCentre - radius, lsCentre + radius}, glm::vec2(2.0f * radius)};
 }
 
 // three.js r187 (examples/jsm/csm/CSM.js, _updateShadowBounds): a square as wide as the slice's
@@ -279,10 +284,17 @@ CascadeFit fitCascade(const CameraParams& cam, std::span<const float> splits, in
     const auto i = static_cast<std::size_t>(index);
     out.vsNear = p.fit == FitMode::Scene ? splits[0] : splits[i];  // seed 004 "fit to scene"
     out.vsFar = splits[i + 1];
-    SliceBox box = p.fit == FitMode::Sphere     ? sphereBox(frame.camera, out.vsNear, out.vsFar, rotation)
+    const auto corners = [&] {
+        if (!p.float32Corners) return sliceCornersFromCamera(frame.camera, out.vsNear, out.vsFar);
+        const double range = p.float32Corners->farPlane - p.float32Corners->nearPlane;
+        return sliceCornersThroughFloat32Inverse(*p.float32Corners, (out.vsNear - p.float32Corners->nearPlane) / range,
+                                                 (out.vsFar - p.float32Corners->nearPlane) / range);
+    };
+    const bool meanSphere = p.fit == FitMode::Sphere && p.sphereAroundCornersMean;
+    SliceBox box = meanSphere                   ? meanSphereBox(corners(), rotation)
+                   : p.fit == FitMode::Sphere   ? sphereBox(frame.camera, out.vsNear, out.vsFar, rotation)
                    : p.fit == FitMode::Diagonal ? diagonalBox(frame.camera, out.vsNear, out.vsFar, rotation)
-                   : p.float32Corners   ? float32CornerBox(*p.float32Corners, out.vsNear, out.vsFar, rotation)
-                                                : cornerBox(frame.camera, out.vsNear, out.vsFar, rotation);
+                                                : cornerBox(corners(), rotation);
     if (p.fit == FitMode::Samples && p.lsSamples) {
         // The reduction's bounds are in the rotation-only frame of scene coordinates: moved into
         // this one by lsView's translation.

@@ -51,6 +51,7 @@ struct FitParams {
     // FitMode::Cascade: the slice's corners through the float32 inverse of this camera's matrices
     // (cascades.sliceCorners float32-inverse, Babylon.js) instead of from the camera's planes.
     std::optional<Float32Camera> float32Corners;
+    bool sphereAroundCornersMean = false;  // FitMode::Sphere: cascades.sphereCentre corners-mean
 };
 
 struct CascadeFit {

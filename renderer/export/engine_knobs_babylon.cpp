@@ -62,6 +62,7 @@ Settings babylonModel(const json& given, const Settings& view) {
     // rounded up to 1/16 (approximate: Babylon centres it on the corners' mean); then the origin shift
     // (cSG:406-419) rounds the box's centre to whole texels, in both modes.
     c.fit = k.at("stabilizeCascades").get<bool>() ? FitMode::Sphere : FitMode::Cascade;
+    c.sphereCentre = SphereCentre::CornersMean;  // cSG:473-483: around the corners' mean
     // cSG:423-459 finds the slice's corners through the float32 inverse of the camera's matrices.
     c.sliceCorners = SliceCorners::Float32Inverse;
     c.stabilize = true;
@@ -108,6 +109,8 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     k["stabilizeCascades"] = c.fit == FitMode::Sphere;
     if (c.fit != FitMode::Sphere && c.fit != FitMode::Cascade)
         out.lacks.push_back("fit '" + enumName(c.fit) + "': Babylon fits the slice's box or a sphere");
+    if (c.fit == FitMode::Sphere && c.sphereCentre != SphereCentre::CornersMean)
+        out.lacks.push_back("the smallest sphere: Babylon centres its sphere on the slice corners' mean");
     if (!c.stabilize || c.snap != Snap::CentreRound) out.lacks.push_back("a box not centre-rounded to texels: Babylon always rounds");
     const bool depthClamp = c.zExtension == ZExtension::Pancake;
     k["depthClamp"] = depthClamp;

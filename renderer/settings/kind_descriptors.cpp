@@ -173,7 +173,7 @@ constexpr std::string_view kIndependent[] = {
     "light.angularDiameter", "cascades.count", "cascades.shadowDistance", "cascades.depthBounds",
     "cascades.mapSize", "cascades.fit", "cascades.stabilize", "cascades.casterCulling", "cascades.updateInterval",
     "cascades.blendBand", "cascades.fadeBand", "cascades.cameraRelative", "cascades.fitFovY",
-    "cascades.matricesOneFrameLate", "cascades.lightDepth", "cascades.casterFaces", "cascades.snap", "cascades.sliceCorners", "bias.constantUnit", "filter.padding", "bias.constant",
+    "cascades.matricesOneFrameLate", "cascades.lightDepth", "cascades.casterFaces", "cascades.snap", "cascades.sliceCorners", "cascades.sphereCentre", "bias.constantUnit", "filter.padding", "bias.constant",
     "bias.slope", "bias.normalOffset", "bias.normalOffsetUnit", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
     "output.height", "path.frames", "path.keyframes", "measure.sunRays", "measure.artifactTexels",
     // The mode fields themselves: each one always applies.

@@ -73,6 +73,16 @@ struct EnumNames<Snap> {
     static constexpr std::array<std::string_view, ST_SNAP_COUNT> names{"box-floor", "centre-floor", "centre-round"};
 };
 
+// Where the sphere fit centres each slice's sphere: Smallest, the smallest sphere around the slice
+// (its centre on the view axis); CornersMean, the mean of the slice's 8 corners with the farthest
+// corner on it, a looser sphere (Babylon.js stabilizeCascades, cascadedShadowGenerator.pure.js:473-483;
+// Godot's split spheres). Both radii are rounded up to 1/16 m.
+enum class SphereCentre { Smallest = ST_SPHERE_SMALLEST, CornersMean = ST_SPHERE_CORNERS_MEAN };
+template <>
+struct EnumNames<SphereCentre> {
+    static constexpr std::array<std::string_view, ST_SPHERE_COUNT> names{"smallest", "corners-mean"};
+};
+
 // Where the cascade fit finds each slice's corners: Exact from the camera's planes; Float32Inverse
 // as an engine that keeps its matrices in float32 does, unprojecting the NDC cube through the
 // float32 inverse of the camera's view-projection (Babylon.js; renderer/csm/float32_corners.h). Far
@@ -209,6 +219,7 @@ static_assert(int(FitMode::Diagonal) == ST_FIT_COUNT - 1 && int(FitMode::Cascade
 static_assert(int(CasterFaces::Front) == ST_FACES_COUNT - 1 && int(CasterFaces::Both) == 0);
 static_assert(int(Snap::CentreRound) == ST_SNAP_COUNT - 1 && int(Snap::BoxFloor) == 0);
 static_assert(int(SliceCorners::Float32Inverse) == ST_CORNERS_COUNT - 1 && int(SliceCorners::Exact) == 0);
+static_assert(int(SphereCentre::CornersMean) == ST_SPHERE_COUNT - 1 && int(SphereCentre::Smallest) == 0);
 static_assert(int(BiasUnit::Depth) == ST_BIASUNIT_COUNT - 1 && int(BiasUnit::Metres) == 0);
 static_assert(int(OffsetUnit::Metres) == ST_OFFSET_COUNT - 1 && int(OffsetUnit::Texels) == 0);
 static_assert(int(DepthBounds::Fit) == ST_DEPTH_BOUNDS_COUNT - 1 && int(DepthBounds::Off) == 0);
@@ -263,6 +274,7 @@ struct CascadeSettings {
     bool stabilize = false;                // snap the light box to whole texels (seed 001)
     Snap snap = Snap::BoxFloor;            // how, when stabilize is on
     SliceCorners sliceCorners = SliceCorners::Exact;  // where the fit finds each slice's corners
+    SphereCentre sphereCentre = SphereCentre::Smallest;  // where the sphere fit centres its sphere
     ZExtension zExtension = ZExtension::SceneBounds;
     float zExtensionDistance = 100.0f;     // metres, for ZExtension::Distance
     float lightDepth = 0.0f;               // metres from the box's near plane to its far one; 0 = to the slice's far side

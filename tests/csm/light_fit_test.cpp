@@ -251,3 +251,38 @@ TEST(LightFitTest, DiagonalFitIsTheLongerDiagonalSquareWithItsCentreFlooredToTex
 
 }  // namespace
 }  // namespace st::csm
+
+namespace st::csm {
+namespace {
+// cascades.sphereCentre corners-mean (Babylon's stabilizeCascades): the box is the sphere around the
+// slice corners' mean through the farthest corner, radius rounded up to 1/16 m, worked here from the
+// corners themselves; it holds every corner, and it is no smaller than the smallest sphere's box.
+TEST(LightFitTest, TheCornersMeanSphereIsCentredOnTheCornersAndReachesTheFarthest) {
+    for (const CameraParams& cam : cameras()) {
+        const std::vector<float> splits = splitsFor(cam, 4);
+        for (const glm::vec3& dir : lightDirs())
+            for (int i = 0; i < 4; ++i) {
+                FitParams p;
+                p.fit = FitMode::Sphere;
+                p.zExtension = ZExtension::None;
+                const CascadeFit smallest = fitCascade(cam, splits, i, dir, p);
+                p.sphereAroundCornersMean = true;
+                const CascadeFit fit = fitCascade(cam, splits, i, dir, p);
+                const Corners ws = sliceCornersFromCamera(cam, splits[std::size_t(i)], splits[std::size_t(i) + 1]);
+                glm::dvec3 mean(0.0);
+                for (const glm::vec3& c : ws) mean += glm::dvec3(c) / 8.0;
+                double r = 0.0;
+                for (const glm::vec3& c : ws) r = std::max(r, glm::distance(glm::dvec3(c), mean));
+                const double radius = std::ceil(r * 16.0) / 16.0;
+                const glm::vec3 centre(fit.lsView * glm::vec4(glm::vec3(mean), 1.0f));
+                const std::string what = "cascade " + std::to_string(i);
+                EXPECT_NEAR(fit.lsBox.max.x - fit.lsBox.min.x, 2.0 * radius, 1e-3 * radius) << what;
+                EXPECT_NEAR(0.5f * (fit.lsBox.max.x + fit.lsBox.min.x), centre.x, 1e-4f * float(radius)) << what;
+                EXPECT_NEAR(0.5f * (fit.lsBox.max.y + fit.lsBox.min.y), centre.y, 1e-4f * float(radius)) << what;
+                EXPECT_GE(fit.lsBox.max.x - fit.lsBox.min.x, smallest.lsBox.max.x - smallest.lsBox.min.x) << what;
+                expectCornersInside(fit, cam, what);
+            }
+    }
+}
+}  // namespace
+}  // namespace st::csm

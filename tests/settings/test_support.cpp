@@ -21,6 +21,7 @@ Settings everyFieldChanged() {
                   .shadowDistance = 150.0f, .depthBounds = DepthBounds::Fit, .mapSize = 2048, .storage = CascadeStorage::Atlas,
                   .mapSizes = {2048, 1024, 512}, .atlasPadding = 4, .fit = FitMode::Sphere, .stabilize = true,
                   .snap = Snap::CentreRound, .sliceCorners = SliceCorners::Float32Inverse,
+                  .sphereCentre = SphereCentre::CornersMean,
                   .zExtension = ZExtension::Distance, .zExtensionDistance = 55.5f, .lightDepth = 300.0f,
                   .casterFaces = CasterFaces::Back, .pancakeToCasters = true, .selection = Selection::Map,
                   .blendBand = 0.1f, .casterCulling = false, .updateInterval = {1.0f, 2.0f, 4.0f}, .fadeBand = 0.2f,
