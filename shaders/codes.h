@@ -84,6 +84,11 @@
 #define ST_OFFSET_METRES 1
 #define ST_OFFSET_COUNT 2
 
+/* NormalOffsetSide (bias.normalOffsetSide): what the normal offset moves */
+#define ST_NORMALSIDE_RECEIVER 0    /* the receiver, out along its normal, by the offset */
+#define ST_NORMALSIDE_CASTER_SIN 1  /* the caster, into its surface, by the offset x sin(N, L) (Babylon.js) */
+#define ST_NORMALSIDE_COUNT 2
+
 // FilterWeights: the weights of the NxN PCF taps
 #define ST_WEIGHTS_BOX 0
 #define ST_WEIGHTS_GAUSSIAN 1

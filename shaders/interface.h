@@ -77,7 +77,11 @@
     M(int, screenShadow)   /* bool: read the factor from the screen-space mask, not the maps */   \
     M(int, subpixelSteps)  /* >0: vertices snap to 1/steps of a pixel of this pass (the engine's GPU) */ \
     M(int, viewportWidth)  /* pixels (texels) of this pass's viewport, for the snap */            \
-    M(int, viewportHeight)
+    M(int, viewportHeight)                                                                        \
+    M(float, casterNormalOffset) /* shadow pass: metres casters move into their surface x sin(N, L) */ \
+    M(int, viewPad0)                                                                              \
+    M(int, viewPad1)                                                                              \
+    M(int, viewPad2)
 
 // One cascade's values, an element of CascadeBlock::cascade.
 #define ST_CASCADE_DATA(M, A)                                                                     \

@@ -87,10 +87,10 @@ Settings babylonModel(const json& given, const Settings& view) {
     b.constant = static_cast<float>((depthClamp ? 1.5 : 0.5) * k.at("bias").get<double>());
     b.constantUnit = BiasUnit::Depth;
     b.slope = 0.0f;
-    // Babylon moves casters into their surface by normalBias x sin(theta) (shadowMapVertexNormalBias.js);
-    // approximated by moving receivers out as far (both widen the gap by the same metres on a plane).
+    // shadowMapVertexNormalBias.js: casters move into their surface by normalBias x sin(N, L), metres.
     b.normalOffset = knobFloat(k, "normalBias", 0.0, 1e3);
     b.normalOffsetUnit = OffsetUnit::Metres;
+    b.normalOffsetSide = NormalOffsetSide::CasterSin;
     return s;
 }
 
@@ -125,6 +125,8 @@ EngineKnobs babylonKnobsFor(const Settings& s) {
     else out.lacks.push_back("a constant bias in metres: Babylon's bias is a share of each box's depth");
     if (s.bias.normalOffsetUnit == OffsetUnit::Metres) k["normalBias"] = round6(s.bias.normalOffset);
     else if (s.bias.normalOffset > 0.0f) out.lacks.push_back("normal offset in texels: Babylon's normalBias is metres");
+    if (s.bias.normalOffset > 0.0f && s.bias.normalOffsetSide != NormalOffsetSide::CasterSin)
+        out.lacks.push_back("a normal offset on the receivers: Babylon moves the casters in, by normalBias x sin(N, L)");
     if (s.bias.slope > 0.0f) out.lacks.push_back("slope-scaled bias");
     if (s.bias.receiverPlane) out.lacks.push_back("receiver-plane bias");
     if (hasCascadeBias(s.bias)) out.lacks.push_back("bias per cascade");

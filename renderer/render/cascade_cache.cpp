@@ -41,6 +41,7 @@ CascadeDecision CascadeCache::decide(int i, const CascadeMapKey& key) const {
     else if (key.casters != slot.key.casters) why = "casters changed";
     else if (key.depthClamp != slot.key.depthClamp) why = "depth clamp changed";
     else if (key.subpixelSteps != slot.key.subpixelSteps) why = "rasterizer grid changed";
+    else if (key.casterNormalOffset != slot.key.casterNormalOffset) why = "caster normal offset changed";
     else return {false, "unchanged"};
     const int k = interval_[std::size_t(i)];
     const int age = frame_ - slot.drawnFrame;

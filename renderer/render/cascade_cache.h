@@ -26,6 +26,7 @@ struct CascadeMapKey {
     int mapSize = 0;
     int casterFaces = 0;        // CasterFaces: which faces were drawn
     int subpixelSteps = 0;      // RenderOptions::subpixelSteps: the grid vertices were snapped to
+    float casterNormalOffset = 0.0f;  // metres the casters were moved into their surface
     bool operator==(const CascadeMapKey&) const = default;
 };
 

@@ -12,6 +12,16 @@
 #include <vector>
 
 namespace st {
+
+namespace {
+// A cascade's view for its casters: its matrix, its map's texel grid, and the casters' own normal
+// offset (bias.normalOffsetSide caster-sin: moved into their surface in shadow_depth.vert).
+gpu_if::ViewBlock casterViewBlockFor(const Settings& s, const glm::mat4& viewProj, int size, int subpixelSteps) {
+    gpu_if::ViewBlock v = viewBlockOf(viewProj, size, size, subpixelSteps);
+    if (s.bias.normalOffsetSide == NormalOffsetSide::CasterSin) v.casterNormalOffset = s.bias.normalOffset;
+    return v;
+}
+}  // namespace
 namespace {
 
 // Triangles of cluster k whose own light-space bounds meet the light box.
@@ -67,14 +77,15 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
         if (csm::casterMayShadow(clusters[k].wsBounds, volume)) batches_.add(clusters, k);
     }
     const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.cascades(), shadowMaps_.tile(i).size,
-                            int(s.cascades.casterFaces), options_.subpixelSteps};
+                            int(s.cascades.casterFaces), options_.subpixelSteps,
+                            s.bias.normalOffsetSide == NormalOffsetSide::CasterSin ? s.bias.normalOffset : 0.0f};
     const CascadeDecision d = cache_.decide(i, key);
     if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));
     CascadeStats& held = held_[std::size_t(i)];
     if (d.redraw) {
         shadowMaps_.beginCascade(i, state);  // its layer or tile: viewport, scissor, cleared
         const int size = shadowMaps_.tile(i).size;
-        viewBlock_.upload(viewBlockOf(fit.viewProj, size, size, options_.subpixelSteps));
+        viewBlock_.upload(casterViewBlockFor(s, fit.viewProj, size, options_.subpixelSteps));
         scene_.drawDepthBatches(batches_, casterCulling(s.cascades.casterFaces), depthPrograms());
         cache_.drawn(i, key, fit);
         work = mapWork(shadowMaps_.tile(i).size, batches_.rangeCount());
@@ -108,7 +119,7 @@ void Renderer::naiveCascadeCasters(const Settings& s, int i, const gpu::PassStat
     const csm::CascadeFit& fit = plan_.cascades[std::size_t(i)];
     shadowMaps_.beginCascade(i, state);
     const int size = shadowMaps_.tile(i).size;
-    viewBlock_.upload(viewBlockOf(fit.viewProj, size, size, options_.subpixelSteps));
+    viewBlock_.upload(casterViewBlockFor(s, fit.viewProj, size, options_.subpixelSteps));
     for (const DrawItem& item : scene_.scene().draws) {
         if (!csm::casterNeeded(item.wsBounds, fit, pancake)) continue;
         scene_.draw(item, casterCulling(s.cascades.casterFaces));

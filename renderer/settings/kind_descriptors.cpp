@@ -174,7 +174,7 @@ constexpr std::string_view kIndependent[] = {
     "cascades.mapSize", "cascades.fit", "cascades.stabilize", "cascades.casterCulling", "cascades.updateInterval",
     "cascades.blendBand", "cascades.fadeBand", "cascades.cameraRelative", "cascades.fitFovY",
     "cascades.matricesOneFrameLate", "cascades.lightDepth", "cascades.casterFaces", "cascades.snap", "cascades.sliceCorners", "cascades.sphereCentre", "bias.constantUnit", "filter.padding", "bias.constant",
-    "bias.slope", "bias.normalOffset", "bias.normalOffsetUnit", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
+    "bias.slope", "bias.normalOffset", "bias.normalOffsetUnit", "bias.normalOffsetSide", "bias.constantScale", "bias.slopeScale", "bias.normalOffsetScale", "output.width",
     "output.height", "path.frames", "path.keyframes", "measure.sunRays", "measure.artifactTexels",
     // The mode fields themselves: each one always applies.
     "filter.kind", "filter.screenSpace", "filter.contact", "cascades.scheme", "cascades.zExtension", "cascades.storage",

@@ -103,6 +103,16 @@ struct EnumNames<BiasUnit> {
 
 // What bias.normalOffset counts: the cascade's texels (scales with the map's footprint) or metres
 // (three.js's and Babylon's normalBias).
+// What bias.normalOffset moves: the receiver's lookup, out along its normal (three.js, seed 004's
+// normal offset), or the caster, into its own surface by the offset times the sine of the angle
+// between its normal and the sun (Babylon.js shadowMapVertexNormalBias.js): nothing on faces square to
+// the sun, the whole offset on faces edge-on to it.
+enum class NormalOffsetSide { Receiver = ST_NORMALSIDE_RECEIVER, CasterSin = ST_NORMALSIDE_CASTER_SIN };
+template <>
+struct EnumNames<NormalOffsetSide> {
+    static constexpr std::array<std::string_view, ST_NORMALSIDE_COUNT> names{"receiver", "caster-sin"};
+};
+
 enum class OffsetUnit { Texels = ST_OFFSET_TEXELS, Metres = ST_OFFSET_METRES };
 template <>
 struct EnumNames<OffsetUnit> {
@@ -219,6 +229,7 @@ static_assert(int(FitMode::Diagonal) == ST_FIT_COUNT - 1 && int(FitMode::Cascade
 static_assert(int(CasterFaces::Front) == ST_FACES_COUNT - 1 && int(CasterFaces::Both) == 0);
 static_assert(int(Snap::CentreRound) == ST_SNAP_COUNT - 1 && int(Snap::BoxFloor) == 0);
 static_assert(int(SliceCorners::Float32Inverse) == ST_CORNERS_COUNT - 1 && int(SliceCorners::Exact) == 0);
+static_assert(int(NormalOffsetSide::CasterSin) == ST_NORMALSIDE_COUNT - 1 && int(NormalOffsetSide::Receiver) == 0);
 static_assert(int(SphereCentre::CornersMean) == ST_SPHERE_COUNT - 1 && int(SphereCentre::Smallest) == 0);
 static_assert(int(BiasUnit::Depth) == ST_BIASUNIT_COUNT - 1 && int(BiasUnit::Metres) == 0);
 static_assert(int(OffsetUnit::Metres) == ST_OFFSET_COUNT - 1 && int(OffsetUnit::Texels) == 0);
@@ -335,6 +346,7 @@ struct BiasSettings {
     float slope = 1.0f;         // texel world sizes per unit of tan(angle to light)
     float normalOffset = 0.0f;  // receiver moved along its normal, in normalOffsetUnit
     OffsetUnit normalOffsetUnit = OffsetUnit::Texels;
+    NormalOffsetSide normalOffsetSide = NormalOffsetSide::Receiver;  // what the offset moves
     bool receiverPlane = false; // derivative-based receiver-plane depth bias (seed 004)
     // Per cascade factors of constant, slope and normal offset (cascadeBias below): empty = 1 for every
     // cascade, else one per cascade. Factors, not values, so the global knobs stay the artist's one

@@ -122,6 +122,12 @@ void checkBleedRemap(const Settings& s, std::vector<SettingsIssue>& out) {
                                            formatFloat(s.filter.bleedHigh)});
 }
 
+void checkCasterOffsetUnit(const Settings& s, std::vector<SettingsIssue>& out) {
+    if (s.bias.normalOffsetSide != NormalOffsetSide::CasterSin || s.bias.normalOffsetUnit == OffsetUnit::Metres) return;
+    out.push_back({"bias.normalOffsetUnit", "must be \"metres\" when bias.normalOffsetSide is \"caster-sin\" (the casters move "
+                                            "before any cascade's texel is known), got \"texels\""});
+}
+
 void checkTarget(const Settings& s, std::vector<SettingsIssue>& out) {
     if (s.camera.target != s.camera.position) return;
     out.push_back({"camera.target", "must differ from camera.position, or the view direction is undefined"});
@@ -236,6 +242,9 @@ const std::vector<CrossRule>& crossRules() {
         {"camera.nearPlane must be less than camera.farPlane.", {"camera.nearPlane", "camera.farPlane"}, checkNearFar},
         {"camera.target must differ from camera.position.", {"camera.position", "camera.target"}, checkTarget},
         {"filter.bleedLow must be less than filter.bleedHigh.", {"filter.bleedLow", "filter.bleedHigh"}, checkBleedRemap},
+        {"bias.normalOffsetSide \"caster-sin\" takes bias.normalOffsetUnit \"metres\".",
+         {"bias.normalOffsetSide", "bias.normalOffsetUnit"},
+         checkCasterOffsetUnit},
         {"cascades.shadowDistance must be 0 (use the far plane) or in (camera.nearPlane, camera.farPlane].",
          {"camera.nearPlane", "camera.farPlane", "cascades.shadowDistance"},
          checkShadowDistance},

@@ -33,7 +33,8 @@ Settings everyFieldChanged() {
                 .screenBlurRadius = 6, .screenDepthSigma = 0.25f, .contact = ContactShadows::March, .contactLength = 1.25f,
                 .contactSteps = 20, .contactThickness = 0.75f};
     s.bias = {.constant = 0.005f, .constantUnit = BiasUnit::Depth, .slope = 2.5f, .normalOffset = 1.5f,
-              .normalOffsetUnit = OffsetUnit::Metres, .receiverPlane = true,
+              .normalOffsetUnit = OffsetUnit::Metres,
+              .normalOffsetSide = NormalOffsetSide::CasterSin, .receiverPlane = true,
               .constantScale = {1.0f, 1.5f, 2.25f}, .slopeScale = {0.5f, 1.0f, 1.0f}, .normalOffsetScale = {1.0f, 1.0f, 3.0f}};
     s.output = {.width = 800, .height = 600, .view = View::Cascades, .texelBlock = 16, .sideTexels = true};
     s.path = {.frames = 12,

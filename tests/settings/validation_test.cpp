@@ -185,7 +185,7 @@ TEST(ValidationTest, TheBleedRemapNeedsItsCutBelowItsTop) {
 }
 
 TEST(ValidationTest, CrossFieldRulesAreDescribed) {
-    EXPECT_EQ(crossFieldRuleDescriptions().size(), 11u);
+    EXPECT_EQ(crossFieldRuleDescriptions().size(), 12u);
     for (const auto description : crossFieldRuleDescriptions()) EXPECT_EQ(description.back(), '.');
 }
 
