@@ -31,7 +31,10 @@ void probeLines(const ProbeView& p) {
                             p.truth ? "false shadow" : "false light");
     ImGui::Text("Bias: %s constant + %s slope along the light", formatLength(p.constantBias).c_str(),
                 formatLength(p.slopeBias).c_str());
-    ImGui::Text("      %s normal offset (N.L %.2f)", formatLength(p.normalOffset).c_str(), double(p.nDotL));
+    if (p.offsetOnCasters)
+        ImGui::Text("      casters moved in %s x sin(N, L) (N.L here %.2f)", formatLength(p.normalOffset).c_str(), double(p.nDotL));
+    else
+        ImGui::Text("      %s normal offset (N.L %.2f)", formatLength(p.normalOffset).c_str(), double(p.nDotL));
 }
 
 // One axis: after the cursor, else before it, else as far after as `hi` lets it (from `lo` when

@@ -21,6 +21,7 @@ struct ProbeView {
     float constantBias = 0.0f;    // metres along the light
     float slopeBias = 0.0f;       // metres along the light (slope x texel x tan of the angle)
     float normalOffset = 0.0f;    // metres along the normal
+    bool offsetOnCasters = false; // bias.normalOffsetSide caster-sin: casters moved in, x sin(N, L)
     int truth = -1;               // ray-cast ground truth: 1 lit, 0 shadowed, -1 not computed
 };
 

@@ -35,7 +35,7 @@ int truthOf(metrics::PixelClass c) {
 }  // namespace
 
 ui::ProbeView readProbe(const MeasureSamples& m, int x, int y, const Settings& s, const std::vector<float>& texelWorld,
-                        const std::vector<metrics::PixelClass>* classes) {
+                        const std::vector<metrics::PixelClass>* classes, const std::vector<float>& depthRange) {
     ui::ProbeView p;
     p.x = x;
     p.y = y;
@@ -54,9 +54,13 @@ ui::ProbeView readProbe(const MeasureSamples& m, int x, int y, const Settings& s
         // shadowCoord (normal offset in texels of the cascade).
         p.texelWorldSize = texelWorld[std::size_t(p.cascade)];
         const CascadeBias bias = cascadeBias(s.bias, p.cascade);  // the global bias times the cascade's factors
-        p.constantBias = bias.constant;
+        const std::size_t c = std::size_t(p.cascade);
+        // bias.constantUnit depth: a share of the cascade's light-box depth (Babylon.js, three.js).
+        const float depthUnit = s.bias.constantUnit == BiasUnit::Depth ? (c < depthRange.size() ? depthRange[c] : 0.0f) : 1.0f;
+        p.constantBias = bias.constant * depthUnit;
         p.slopeBias = bias.slope * p.texelWorldSize * tanToLight(p.nDotL);
-        p.normalOffset = bias.normalOffset * p.texelWorldSize;
+        p.normalOffset = bias.normalOffset * (s.bias.normalOffsetUnit == OffsetUnit::Metres ? 1.0f : p.texelWorldSize);
+        p.offsetOnCasters = s.bias.normalOffsetSide == NormalOffsetSide::CasterSin;
     }
     if (classes && classes->size() == m.size()) p.truth = truthOf((*classes)[i]);
     return p;

@@ -18,8 +18,9 @@ namespace st::app {
 // Pure: pixel (x, y) (top-left origin) of `m`. texelWorld: metres per texel by cascade, as the
 // shaders' cascade[i].texelWorld; classes: the Accuracy panel's per-pixel classes of this very
 // frame, or nullptr. Invalid outside the image or where no surface was drawn.
+// depthRange: metres from each cascade's light-box near plane to its far one (a bias in depth units).
 ui::ProbeView readProbe(const MeasureSamples& m, int x, int y, const Settings& s, const std::vector<float>& texelWorld,
-                        const std::vector<metrics::PixelClass>* classes);
+                        const std::vector<metrics::PixelClass>* classes, const std::vector<float>& depthRange = {});
 
 class SceneProbe {
 public:

@@ -218,7 +218,10 @@ void ViewportRenderer::updateProbe(const EditorModel& model, const ViewportFrame
     probe_.update(true, *renderer_, s, &accuracy_->measurePass());
     std::vector<float> texelWorld;
     for (const CascadeStats& c : stats_.cascades) texelWorld.push_back(c.texelWorldSize);
-    probeView_ = readProbe(*probe_.samples(), int(f.probePixel.x), int(f.probePixel.y), s, texelWorld, accuracy_->classes());
+    std::vector<float> depthRange;
+    for (const csm::CascadeFit& c : renderer_->plan().cascades) depthRange.push_back(c.lsBox.max.z - c.lsBox.min.z);
+    probeView_ = readProbe(*probe_.samples(), int(f.probePixel.x), int(f.probePixel.y), s, texelWorld, accuracy_->classes(),
+                           depthRange);
 }
 
 // The scene into its viewport; the rest of the window is the panels' (cleared, so nothing of an

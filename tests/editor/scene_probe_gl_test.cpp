@@ -124,3 +124,36 @@ TEST_F(SceneProbeGLTest, SamplesAreReadOnlyWhenTheFrameChanged) {
 
 }  // namespace
 }  // namespace st::app
+
+namespace st::app {
+namespace {
+// The probe speaks metres whatever the units: a constant bias in depth units is that share of the
+// cascade's light-box depth, a normal offset in metres is not scaled by the texel, and one on the
+// casters says so.
+TEST_F(SceneProbeGLTest, BiasInDepthUnitsAndAnOffsetInMetresReadAsMetres) {
+    settings.bias.constant = 7.5e-5f;
+    settings.bias.constantUnit = BiasUnit::Depth;
+    settings.bias.normalOffset = 0.02f;
+    settings.bias.normalOffsetUnit = OffsetUnit::Metres;
+    settings.bias.normalOffsetSide = NormalOffsetSide::CasterSin;
+    renderer.render(settings);
+    SceneProbe probe;
+    probe.update(true, renderer, settings);
+    ASSERT_NE(probe.samples(), nullptr);
+    const MeasureSamples& m = *probe.samples();
+    std::vector<float> depthRange;
+    for (const csm::CascadeFit& c : renderer.plan().cascades) depthRange.push_back(c.lsBox.max.z - c.lsBox.min.z);
+    int probed = 0;
+    for (int y = 0; y < m.height; y += 9)
+        for (int x = 0; x < m.width; x += 9) {
+            const ui::ProbeView p = readProbe(m, x, y, settings, texelSizes(), nullptr, depthRange);
+            if (!p.valid || p.cascade < 0) continue;
+            ++probed;
+            EXPECT_FLOAT_EQ(p.constantBias, 7.5e-5f * depthRange[std::size_t(p.cascade)]);
+            EXPECT_FLOAT_EQ(p.normalOffset, 0.02f);
+            EXPECT_TRUE(p.offsetOnCasters);
+        }
+    EXPECT_GT(probed, 100);
+}
+}  // namespace
+}  // namespace st::app
