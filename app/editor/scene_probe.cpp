@@ -53,14 +53,13 @@ ui::ProbeView readProbe(const MeasureSamples& m, int x, int y, const Settings& s
         // shaders/shadow_sampling.glsl: biasedDepth (constant + slope x texel x tan) and
         // shadowCoord (normal offset in texels of the cascade).
         p.texelWorldSize = texelWorld[std::size_t(p.cascade)];
-        const CascadeBias bias = cascadeBias(s.bias, p.cascade);  // the global bias times the cascade's factors
         const std::size_t c = std::size_t(p.cascade);
-        // bias.constantUnit depth: a share of the cascade's light-box depth (Babylon.js, three.js).
-        const float depthUnit = s.bias.constantUnit == BiasUnit::Depth ? (c < depthRange.size() ? depthRange[c] : 0.0f) : 1.0f;
-        p.constantBias = bias.constant * depthUnit;
-        p.slopeBias = bias.slope * p.texelWorldSize * tanToLight(p.nDotL);
-        p.normalOffset = bias.normalOffset * (s.bias.normalOffsetUnit == OffsetUnit::Metres ? 1.0f : p.texelWorldSize);
+        const CascadeBiasMetres bias =
+            cascadeBiasMetres(s.bias, p.cascade, p.texelWorldSize, c < depthRange.size() ? depthRange[c] : 0.0f);
+        p.constantBias = bias.constant;
+        p.slopeBias = bias.slopePerTan * tanToLight(p.nDotL);
         p.offsetOnCasters = s.bias.normalOffsetSide == NormalOffsetSide::CasterSin;
+        p.normalOffset = p.offsetOnCasters ? bias.casterOffset : bias.receiverOffset;
     }
     if (classes && classes->size() == m.size()) p.truth = truthOf((*classes)[i]);
     return p;

@@ -41,9 +41,8 @@ CasterVolume casterVolume(const Settings& s, const CameraParams& cam, std::span<
     const float taps = s.filter.kind == FilterKind::PcfNxN || s.filter.kind == FilterKind::Tent ? float(s.filter.size / 2)
                        : s.filter.kind == FilterKind::Vogel ? std::ceil(s.filter.radius)
                                                             : 0.0f;
-    const float rawOffset = cascadeBias(s.bias, index).normalOffset;
-    const float offset = s.bias.normalOffsetUnit == OffsetUnit::Metres ? rawOffset / std::max(fit.texelWorldSize, 1e-9f)
-                                                                       : rawOffset;  // in texels
+    const float offset = cascadeBiasMetres(s.bias, index, fit.texelWorldSize, fit.lsBox.max.z - fit.lsBox.min.z).receiverOffset /
+                         std::max(fit.texelWorldSize, 1e-9f);  // in texels
     v.margin = fit.texelWorldSize * (taps + 2.0f + offset);
     v.lsReceiverMinZ -= fit.texelWorldSize * (offset + 1.0f);  // normal offset moves receivers in z too
     return v;

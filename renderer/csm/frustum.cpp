@@ -46,12 +46,12 @@ void vsCornersAt(const CameraParams& c, float d, glm::vec3* out) {
     out[3] = {-x, y, -d};
 }
 
+}  // namespace
+
 glm::dvec3 unproject(const glm::dmat4& invViewProj, glm::dvec3 ndc) {
     const glm::dvec4 h = invViewProj * glm::dvec4(ndc, 1.0);
     return glm::dvec3(h) / h.w;
 }
-
-}  // namespace
 
 void validateCamera(const CameraParams& c) {
     if (!std::isfinite(c.nearPlane) || c.nearPlane <= 0.0f)

@@ -32,6 +32,9 @@ glm::mat4 projectionMatrix(const CameraParams& c);  // GL clip space, depth [-1,
 // half angles times the depth, then the inverse view matrix).
 Corners sliceCornersFromCamera(const CameraParams& c, float vsNear, float vsFar);
 
+// An NDC point through an inverse view-projection, with the w divide.
+glm::dvec3 unproject(const glm::dmat4& invViewProj, glm::dvec3 ndc);
+
 // The same slice from the inverse view-projection (seed 003 "Frustum Splits"): unproject the NDC
 // cube's corners to the camera frustum, then interpolate along each edge to the slice depths.
 // camNear/camFar are the planes the projection was built with.

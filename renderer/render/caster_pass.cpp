@@ -12,17 +12,15 @@
 #include <vector>
 
 namespace st {
-
 namespace {
+
 // A cascade's view for its casters: its matrix, its map's texel grid, and the casters' own normal
 // offset (bias.normalOffsetSide caster-sin: moved into their surface in shadow_depth.vert).
 gpu_if::ViewBlock casterViewBlockFor(const Settings& s, const glm::mat4& viewProj, int size, int subpixelSteps) {
     gpu_if::ViewBlock v = viewBlockOf(viewProj, size, size, subpixelSteps);
-    if (s.bias.normalOffsetSide == NormalOffsetSide::CasterSin) v.casterNormalOffset = s.bias.normalOffset;
+    v.casterNormalOffset = casterNormalOffset(s.bias);
     return v;
 }
-}  // namespace
-namespace {
 
 // Triangles of cluster k whose own light-space bounds meet the light box.
 std::size_t trianglesMeetingBox(const Scene& scene, const ClusteredScene& cs, const Cluster& k,
@@ -78,7 +76,7 @@ void Renderer::cascadeCasters(const Settings& s, int i, const gpu::PassState& st
     }
     const CascadeMapKey key{fit.viewProj, pancake, batches_.hash(), shadowMaps_.cascades(), shadowMaps_.tile(i).size,
                             int(s.cascades.casterFaces), options_.subpixelSteps,
-                            s.bias.normalOffsetSide == NormalOffsetSide::CasterSin ? s.bias.normalOffset : 0.0f};
+                            casterNormalOffset(s.bias)};
     const CascadeDecision d = cache_.decide(i, key);
     if (held_.size() < std::size_t(s.cascades.count)) held_.resize(std::size_t(s.cascades.count));
     CascadeStats& held = held_[std::size_t(i)];

@@ -65,7 +65,7 @@ gpu_if::CascadeBlock cascadeBlock(const Settings& s, const csm::CascadePlan& pla
     b.evsmPosExp = evsmExponent(s.filter.evsmPositive, s.filter.moments16);
     b.evsmNegExp = evsmExponent(s.filter.evsmNegative, s.filter.moments16);
     b.sunTan = std::tan(glm::radians(s.light.angularDiameter));
-    if (s.bias.normalOffsetSide == NormalOffsetSide::CasterSin) b.normalOffset = 0.0f;  // the casters moved instead
+    b.normalOffset = receiverNormalOffset(s.bias);  // 0 when the casters move instead (caster_pass.cpp)
     for (int i = 0; i < s.cascades.count; ++i) {
         const csm::CascadeFit& f = plan.cascades[static_cast<std::size_t>(i)];
         gpu_if::CascadeData& c = b.cascade[i];

@@ -358,12 +358,12 @@ struct BiasSettings {
 };
 
 // The bias one cascade applies: the global constant, slope and normal offset times that cascade's
-// factor (1 where a list is empty or shorter). The shader (CascadeData::biasScale), caster culling
-// and the exporters read it here.
+// factor (1 where a list is empty or shorter), each in its own unit. The shader
+// (CascadeData::biasScale) and the exporters read it here; cascadeBiasMetres turns it into metres.
 struct CascadeBias {
-    float constant = 0.0f;      // metres
+    float constant = 0.0f;      // bias.constantUnit: metres, or the light box's normalised depth
     float slope = 0.0f;         // texel world sizes per unit tan(angle to the sun)
-    float normalOffset = 0.0f;  // texel world sizes
+    float normalOffset = 0.0f;  // bias.normalOffsetUnit: texel world sizes, or metres
 };
 
 inline float cascadeFactor(const std::vector<float>& factors, int cascade) {
@@ -374,6 +374,32 @@ inline float cascadeFactor(const std::vector<float>& factors, int cascade) {
 inline CascadeBias cascadeBias(const BiasSettings& b, int cascade) {
     return {b.constant * cascadeFactor(b.constantScale, cascade), b.slope * cascadeFactor(b.slopeScale, cascade),
             b.normalOffset * cascadeFactor(b.normalOffsetScale, cascade)};
+}
+
+// What bias.normalOffsetSide moves by the normal offset: the receivers (shadow_sampling.glsl
+// shadowCoord), or the casters, by the offset x sin(N, L) (shadow_depth.vert; metres only).
+inline float receiverNormalOffset(const BiasSettings& b) {
+    return b.normalOffsetSide == NormalOffsetSide::Receiver ? b.normalOffset : 0.0f;
+}
+inline float casterNormalOffset(const BiasSettings& b) {
+    return b.normalOffsetSide == NormalOffsetSide::CasterSin ? b.normalOffset : 0.0f;
+}
+
+// Cascade i's bias in metres, as the shaders apply it (shadow_sampling.glsl biasedDepth and
+// shadowCoord, shadow_depth.vert), given that cascade's texel and light-box depth in metres.
+struct CascadeBiasMetres {
+    float constant = 0.0f;        // along the light
+    float slopePerTan = 0.0f;     // along the light, per unit tan(angle to the sun)
+    float receiverOffset = 0.0f;  // receivers moved out along their normal
+    float casterOffset = 0.0f;    // casters moved in along theirs, before the x sin(N, L)
+};
+inline CascadeBiasMetres cascadeBiasMetres(const BiasSettings& b, int cascade, float texelWorld, float depthRange) {
+    const CascadeBias c = cascadeBias(b, cascade);
+    const float offsetUnit = b.normalOffsetUnit == OffsetUnit::Metres ? 1.0f : texelWorld;
+    const float offset = c.normalOffset * offsetUnit;
+    return {c.constant * (b.constantUnit == BiasUnit::Depth ? depthRange : 1.0f), c.slope * texelWorld,
+            b.normalOffsetSide == NormalOffsetSide::Receiver ? offset : 0.0f,
+            b.normalOffsetSide == NormalOffsetSide::CasterSin ? offset : 0.0f};
 }
 
 // True when some cascade's factor differs from 1: the preset biases its cascades differently.
